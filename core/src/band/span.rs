@@ -1,0 +1,1 @@
+//! Span sweep (filled in next).

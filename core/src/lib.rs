@@ -1,0 +1,45 @@
+//! # softedge
+//!
+//! Anti-aliased, gamma-correct, Gouraud-shading rasterizer for the small
+//! displays of microcontrollers: `#![no_std]`, no heap, no floating point and
+//! no multiply or divide in the per-pixel loops (integer add, subtract,
+//! compare, shift and table look-up only; products appear once per
+//! primitive, per edge or per span, as stated where they occur).
+//!
+//! One frame flows through the stages in the order of the modules below:
+//!
+//! 1. [`geom`]: vertices in sub-pixel fixed point (1/16 px), checked against
+//!    the documented coordinate range.
+//! 2. [`shade`]: per-primitive setup of the Gouraud plane (the only place
+//!    colour gradients are divided).
+//! 3. [`edge`]: the Bresenham evaluation-function edge walker of seed 001,
+//!    computing each edge pixel's address, covered area and `I * S` with
+//!    additions.
+//! 4. [`band`]: the caller-provided accumulation buffer of one band of rows,
+//!    `I_acc += I * S` (seed 000, eq. 3), the span sweep that fills interior
+//!    pixels, and the one rounding of the frame, at resolve.
+//! 5. [`raster`]: the primitives users draw (triangles, polygons, lines).
+//! 6. [`tone`]: γ tables and logarithmic intensity codes (seed 000).
+//!
+#![no_std]
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+
+pub mod band;
+pub mod geom;
+pub mod shade;
+pub mod tone;
+
+pub use band::{Band, BandBuffer, BandError, Bands};
+pub use geom::{CoordError, SubPoint, COORD_LIMIT_PX, SUB_BITS, SUB_ONE};
+pub use shade::LIN_MAX;
+
+/// Coverage of one whole pixel in the units every stage uses: `4096 = 2^12`.
+///
+/// Edge-pixel areas are exact floors in these units (error below 1/4096 of a
+/// pixel, far inside the 1/256 the box model promises); a pixel value in the
+/// accumulation buffer is `lin12 * coverage`, so a fully covered pixel of
+/// intensity 4095 holds `4095 * 4096 < 2^24`.
+pub const COVER_ONE: i32 = 1 << COVER_BITS;
+/// `log2(COVER_ONE)`.
+pub const COVER_BITS: u32 = 12;

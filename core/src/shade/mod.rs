@@ -1,0 +1,170 @@
+//! Shading setup: the Gouraud plane of a primitive.
+//!
+//! Takes the vertices and per-vertex colours of a triangle (or one flat
+//! colour), gives the plane `I(i, j)` of linear intensity at pixel centres in
+//! 16.16 fixed point, relative to the band's background. This is the only
+//! place colour gradients are divided, once per primitive; the edge walker
+//! and the span sweep then step the plane with one addition per pixel
+//! (`I += gx` along a row, `I += gy` down a column) — Gouraud's bilinear
+//! interpolation along edges and spans (seed 001) in its plane form, which
+//! for a triangle is the same function.
+//!
+//! ## Ranges
+//!
+//! Intensities are linear 12-bit (`0..=4095`, [`LIN_MAX`]); larger inputs
+//! are clamped. The gradients are rounded once, to 1/65536 of a level per
+//! pixel, so the plane at any pixel is an exact integer function of the pixel
+//! address (the same bits whether reached by stepping or evaluated directly:
+//! what makes bands of any height agree). A gradient steeper than one full
+//! scale per pixel (only slivers thinner than a pixel have one) is clamped
+//! to it; such a triangle covers under a pixel across, so the clamp changes
+//! its colour only, never its coverage, and keeps every product in range:
+//! the plane is evaluated only at pixels the primitive touches, within 1.5 px
+//! of it, so `|I| < 4 * 4096` and `|I_fine| < 2^30`.
+
+use crate::geom::SubPoint;
+
+/// Largest linear intensity: 12 bits.
+pub const LIN_MAX: u16 = 4095;
+
+/// Fraction bits of the plane's fine intensities.
+pub(crate) const PLANE_FRAC: u32 = 16;
+
+/// Steepest gradient kept, in fine units per pixel: one full scale.
+const GRAD_LIMIT: i64 = (LIN_MAX as i64) << PLANE_FRAC;
+
+/// Gouraud plane of one primitive, per channel, relative to the background.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Plane<const C: usize> {
+    /// Reference pixel.
+    pub i0: i32,
+    /// Reference pixel row.
+    pub j0: i32,
+    /// `(I - bg) * 2^16` at the centre of pixel `(i0, j0)`.
+    pub at0: [i32; C],
+    /// Change per pixel to the right, `* 2^16`.
+    pub gx: [i32; C],
+    /// Change per pixel down, `* 2^16`.
+    pub gy: [i32; C],
+}
+
+/// `round(n / d)` for `d > 0`, halves away from minus infinity.
+fn div_round(n: i64, d: i64) -> i64 {
+    (2 * n + d).div_euclid(2 * d)
+}
+
+impl<const C: usize> Plane<C> {
+    /// A flat colour.
+    pub fn flat(color: [u16; C], background: [u16; C]) -> Self {
+        let mut at0 = [0i32; C];
+        for ((a, c), b) in at0.iter_mut().zip(color).zip(background) {
+            *a = (i32::from(c.min(LIN_MAX)) - i32::from(b.min(LIN_MAX))) << PLANE_FRAC;
+        }
+        Self {
+            i0: 0,
+            j0: 0,
+            at0,
+            gx: [0; C],
+            gy: [0; C],
+        }
+    }
+
+    /// The plane through three vertices and their colours, or `None` when
+    /// the triangle has zero area.
+    pub fn triangle(v: [SubPoint; 3], colors: [[u16; C]; 3], background: [u16; C]) -> Option<Self> {
+        let (x0, y0) = (i64::from(v[0].x), i64::from(v[0].y));
+        let (dx1, dy1) = (i64::from(v[1].x) - x0, i64::from(v[1].y) - y0);
+        let (dx2, dy2) = (i64::from(v[2].x) - x0, i64::from(v[2].y) - y0);
+        let mut d = dx1 * dy2 - dx2 * dy1;
+        if d == 0 {
+            return None;
+        }
+        let sign = d.signum();
+        d *= sign;
+        let i0 = (v[0].x >> crate::SUB_BITS) as i32;
+        let j0 = (v[0].y >> crate::SUB_BITS) as i32;
+        // Offset of the reference pixel's centre from vertex 0, sub-pixels.
+        let half = i64::from(crate::SUB_ONE / 2);
+        let cx = i64::from(i0) * i64::from(crate::SUB_ONE) + half - x0;
+        let cy = i64::from(j0) * i64::from(crate::SUB_ONE) + half - y0;
+        let one = 1i64 << PLANE_FRAC;
+        let per_px = i64::from(crate::SUB_ONE);
+        let mut plane = Self {
+            i0,
+            j0,
+            at0: [0; C],
+            gx: [0; C],
+            gy: [0; C],
+        };
+        for ch in 0..C {
+            let c = |k: usize| i64::from(colors[k][ch].min(LIN_MAX));
+            let (di1, di2) = (c(1) - c(0), c(2) - c(0));
+            // dI/dx = a / d and dI/dy = b / d per sub-pixel unit.
+            let a = sign * (di1 * dy2 - di2 * dy1);
+            let b = sign * (di2 * dx1 - di1 * dx2);
+            let gx = div_round(a * per_px * one, d).clamp(-GRAD_LIMIT, GRAD_LIMIT);
+            let gy = div_round(b * per_px * one, d).clamp(-GRAD_LIMIT, GRAD_LIMIT);
+            let base = (c(0) - i64::from(background[ch].min(LIN_MAX))) * one;
+            let at0 = base + div_round((a * cx + b * cy) * one, d);
+            plane.gx[ch] = gx as i32;
+            plane.gy[ch] = gy as i32;
+            plane.at0[ch] = at0.clamp(-(4 * GRAD_LIMIT), 4 * GRAD_LIMIT) as i32;
+        }
+        Some(plane)
+    }
+
+    /// The fine intensity at the centre of pixel `(i, j)` (setup use: two
+    /// multiplies per channel).
+    pub fn at(&self, i: i32, j: i32) -> [i64; C] {
+        let di = i64::from(i) - i64::from(self.i0);
+        let dj = i64::from(j) - i64::from(self.j0);
+        let mut out = [0i64; C];
+        for ch in 0..C {
+            out[ch] = i64::from(self.at0[ch]) + i64::from(self.gx[ch]) * di + i64::from(self.gy[ch]) * dj;
+        }
+        out
+    }
+
+    /// True when the plane is constant (a flat colour).
+    pub fn is_flat(&self) -> bool {
+        self.gx.iter().chain(self.gy.iter()).all(|&g| g == 0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn flat_triangle_has_zero_gradient_exactly() {
+        let v = [SubPoint::new(3, 5), SubPoint::new(200, 17), SubPoint::new(40, 301)];
+        let p = Plane::triangle(v, [[1000], [1000], [1000]], [0]).unwrap();
+        assert!(p.is_flat());
+        assert_eq!(p.at(7, 9), [1000 << 16]);
+    }
+
+    #[test]
+    fn plane_interpolates_vertex_colours() {
+        // Vertices at pixel centres, so the plane must hit their colours.
+        let c = |x: i32, y: i32| SubPoint::new(x * 16 + 8, y * 16 + 8);
+        let v = [c(0, 0), c(10, 0), c(0, 10)];
+        let p = Plane::triangle(v, [[0], [4000], [2000]], [0]).unwrap();
+        assert_eq!(p.at(0, 0), [0]);
+        assert_eq!(p.at(10, 0), [4000 << 16]);
+        assert_eq!(p.at(0, 10), [2000 << 16]);
+        assert_eq!(p.at(5, 5), [3000 << 16]);
+    }
+
+    #[test]
+    fn degenerate_triangle_has_no_plane() {
+        let v = [SubPoint::new(0, 0), SubPoint::new(16, 16), SubPoint::new(32, 32)];
+        assert!(Plane::triangle(v, [[0], [1], [2]], [0]).is_none());
+    }
+
+    #[test]
+    fn sliver_gradient_is_clamped() {
+        let v = [SubPoint::new(0, 0), SubPoint::new(1000, 0), SubPoint::new(0, 1)];
+        let p = Plane::triangle(v, [[0], [0], [4095]], [0]).unwrap();
+        assert_eq!(i64::from(p.gy[0]), GRAD_LIMIT);
+    }
+}
