@@ -21,17 +21,50 @@
 //! 5. [`raster`]: the primitives users draw (triangles, polygons, lines).
 //! 6. [`tone`]: γ tables and logarithmic intensity codes (seed 000).
 //!
+//! ```
+//! use softedge::{BandBuffer, Bands, RenderStyle, SubPoint, Triangle};
+//!
+//! const W: usize = 32;
+//! const H: usize = 16;
+//! const ROWS: usize = 8;
+//! let mut acc = [0i32; W * ROWS];
+//! let mut cover = [0i32; W * ROWS];
+//! let tri = Triangle::new(
+//!     [SubPoint::from_px(2, 1), SubPoint::new(29 * 16 + 5, 7 * 16), SubPoint::from_px(8, 15)],
+//!     [[4095], [2048], [0]],
+//! );
+//! let mut total = 0u32;
+//! for band in Bands::new(W as u16, H as u16, ROWS as u16) {
+//!     let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
+//!     buf.clear([0]);
+//!     tri.draw(&mut buf, &RenderStyle::default()).unwrap();
+//!     for y in band.y0..band.y0 + band.rows as i32 {
+//!         for x in 0..W as i32 {
+//!             total += u32::from(buf.lin12(x, y).unwrap()[0]);
+//!         }
+//!     }
+//! }
+//! assert!(total > 0);
+//! ```
 #![no_std]
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
+// Per-channel loops index several arrays of the same length at once.
+#![allow(clippy::needless_range_loop)]
 
 pub mod band;
+pub mod edge;
 pub mod geom;
+pub mod raster;
 pub mod shade;
 pub mod tone;
 
 pub use band::{Band, BandBuffer, BandError, Bands};
 pub use geom::{CoordError, SubPoint, COORD_LIMIT_PX, SUB_BITS, SUB_ONE};
+pub use raster::{
+    DrawError, Line, PixelModel, Polygon, PolygonColors, RenderStyle, Triangle,
+    MAX_POLYGON_VERTICES,
+};
 pub use shade::LIN_MAX;
 
 /// Coverage of one whole pixel in the units every stage uses: `4096 = 2^12`.

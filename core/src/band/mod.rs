@@ -39,8 +39,8 @@
 
 mod span;
 
-use crate::COVER_BITS;
 use crate::shade::LIN_MAX;
+use crate::COVER_BITS;
 
 /// Largest band width and frame height handled, in pixels.
 pub const MAX_WIDTH: u16 = 2048;
@@ -268,7 +268,7 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
 /// Rounds an accumulated value to linear 12 bits: the pipeline's one rounding.
 #[inline]
 fn resolve(acc: i32) -> u16 {
-    let v = (acc >> (COVER_BITS - 1)) + 1 >> 1;
+    let v = ((acc >> (COVER_BITS - 1)) + 1) >> 1;
     v.clamp(0, i32::from(LIN_MAX)) as u16
 }
 
@@ -290,18 +290,30 @@ mod tests {
     fn short_buffers_and_bad_bands_are_errors() {
         let mut acc = [0i32; 8];
         let mut cov = [0i32; 8];
-        let band = Band { width: 4, y0: 0, rows: 2 };
+        let band = Band {
+            width: 4,
+            y0: 0,
+            rows: 2,
+        };
         assert!(BandBuffer::<1>::new(&mut acc, &mut cov, band).is_ok());
         assert_eq!(
             BandBuffer::<3>::new(&mut acc, &mut cov, band).err(),
             Some(BandError::AccTooSmall)
         );
-        let zero = Band { width: 0, y0: 0, rows: 2 };
+        let zero = Band {
+            width: 0,
+            y0: 0,
+            rows: 2,
+        };
         assert_eq!(
             BandBuffer::<1>::new(&mut acc, &mut cov, zero).err(),
             Some(BandError::BadBand)
         );
-        let far = Band { width: 4, y0: i32::MIN, rows: 2 };
+        let far = Band {
+            width: 4,
+            y0: i32::MIN,
+            rows: 2,
+        };
         assert_eq!(
             BandBuffer::<1>::new(&mut acc, &mut cov, far).err(),
             Some(BandError::BadBand)
@@ -312,7 +324,16 @@ mod tests {
     fn out_of_band_reads_are_none() {
         let mut acc = [0i32; 8];
         let mut cov = [0i32; 8];
-        let mut b = BandBuffer::<1>::new(&mut acc, &mut cov, Band { width: 4, y0: 10, rows: 2 }).unwrap();
+        let mut b = BandBuffer::<1>::new(
+            &mut acc,
+            &mut cov,
+            Band {
+                width: 4,
+                y0: 10,
+                rows: 2,
+            },
+        )
+        .unwrap();
         b.clear([100]);
         assert_eq!(b.lin12(0, 10), Some([100]));
         assert_eq!(b.lin12(0, 9), None);

@@ -118,7 +118,9 @@ mod tests {
 
     #[test]
     fn range_limits_are_inclusive() {
-        assert!(SubPoint::new(COORD_LIMIT_SUB, -COORD_LIMIT_SUB).check().is_ok());
+        assert!(SubPoint::new(COORD_LIMIT_SUB, -COORD_LIMIT_SUB)
+            .check()
+            .is_ok());
         assert!(SubPoint::new(COORD_LIMIT_SUB + 1, 0).check().is_err());
         assert!(SubPoint::new(0, -COORD_LIMIT_SUB - 1).check().is_err());
         assert!(SubPoint::from_px(i32::MAX, 0).check().is_err());

@@ -28,14 +28,14 @@ use crate::geom::SubPoint;
 pub const LIN_MAX: u16 = 4095;
 
 /// Fraction bits of the plane's fine intensities.
-pub(crate) const PLANE_FRAC: u32 = 16;
+pub const PLANE_FRAC: u32 = 16;
 
 /// Steepest gradient kept, in fine units per pixel: one full scale.
 const GRAD_LIMIT: i64 = (LIN_MAX as i64) << PLANE_FRAC;
 
 /// Gouraud plane of one primitive, per channel, relative to the background.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) struct Plane<const C: usize> {
+pub struct Plane<const C: usize> {
     /// Reference pixel.
     pub i0: i32,
     /// Reference pixel row.
@@ -81,8 +81,8 @@ impl<const C: usize> Plane<C> {
         }
         let sign = d.signum();
         d *= sign;
-        let i0 = (v[0].x >> crate::SUB_BITS) as i32;
-        let j0 = (v[0].y >> crate::SUB_BITS) as i32;
+        let i0 = v[0].x >> crate::SUB_BITS;
+        let j0 = v[0].y >> crate::SUB_BITS;
         // Offset of the reference pixel's centre from vertex 0, sub-pixels.
         let half = i64::from(crate::SUB_ONE / 2);
         let cx = i64::from(i0) * i64::from(crate::SUB_ONE) + half - x0;
@@ -120,7 +120,8 @@ impl<const C: usize> Plane<C> {
         let dj = i64::from(j) - i64::from(self.j0);
         let mut out = [0i64; C];
         for ch in 0..C {
-            out[ch] = i64::from(self.at0[ch]) + i64::from(self.gx[ch]) * di + i64::from(self.gy[ch]) * dj;
+            out[ch] =
+                i64::from(self.at0[ch]) + i64::from(self.gx[ch]) * di + i64::from(self.gy[ch]) * dj;
         }
         out
     }
@@ -137,7 +138,11 @@ mod tests {
 
     #[test]
     fn flat_triangle_has_zero_gradient_exactly() {
-        let v = [SubPoint::new(3, 5), SubPoint::new(200, 17), SubPoint::new(40, 301)];
+        let v = [
+            SubPoint::new(3, 5),
+            SubPoint::new(200, 17),
+            SubPoint::new(40, 301),
+        ];
         let p = Plane::triangle(v, [[1000], [1000], [1000]], [0]).unwrap();
         assert!(p.is_flat());
         assert_eq!(p.at(7, 9), [1000 << 16]);
@@ -157,13 +162,21 @@ mod tests {
 
     #[test]
     fn degenerate_triangle_has_no_plane() {
-        let v = [SubPoint::new(0, 0), SubPoint::new(16, 16), SubPoint::new(32, 32)];
+        let v = [
+            SubPoint::new(0, 0),
+            SubPoint::new(16, 16),
+            SubPoint::new(32, 32),
+        ];
         assert!(Plane::triangle(v, [[0], [1], [2]], [0]).is_none());
     }
 
     #[test]
     fn sliver_gradient_is_clamped() {
-        let v = [SubPoint::new(0, 0), SubPoint::new(1000, 0), SubPoint::new(0, 1)];
+        let v = [
+            SubPoint::new(0, 0),
+            SubPoint::new(1000, 0),
+            SubPoint::new(0, 1),
+        ];
         let p = Plane::triangle(v, [[0], [0], [4095]], [0]).unwrap();
         assert_eq!(i64::from(p.gy[0]), GRAD_LIMIT);
     }

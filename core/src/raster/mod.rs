@@ -1,0 +1,344 @@
+//! The primitives users draw: triangles, polygons and 1-px lines.
+//!
+//! Takes vertices in sub-pixel units with linear 12-bit colours (one per
+//! vertex, or one for the whole primitive), checks them (range, simplicity),
+//! sets up the Gouraud plane ([`shade`](crate::shade)), walks every edge
+//! ([`edge`](crate::edge)) and sweeps the spans ([`band`](crate::band)).
+//! Gives nothing back but a `Result`: the values land in the band buffer.
+//!
+//! ## Results for degenerate input (documented, never a panic)
+//!
+//! - A vertex outside `±COORD_LIMIT_PX` ([`geom`](crate::geom)):
+//!   [`DrawError::Coord`], nothing drawn.
+//! - Zero area (fewer than 3 vertices, collinear or repeated vertices),
+//!   zero-length lines: `Ok`, nothing drawn.
+//! - A polygon whose non-adjacent edges touch or cross:
+//!   [`DrawError::SelfIntersecting`], nothing drawn (its coverage would not
+//!   be an area).
+//! - Colours above 4095 are clamped to 4095.
+//! - Parts outside the frame or the band are clipped.
+//!
+//! Orientation does not matter: clockwise and counter-clockwise vertex
+//! orders give the same pixels.
+
+mod simple;
+
+use crate::band::BandBuffer;
+use crate::edge::{walk_edge, walk_edge_aliased, AreaMode};
+use crate::geom::{area2, CoordError, SubPoint};
+use crate::shade::Plane;
+use crate::SUB_BITS;
+
+/// Most vertices a [`Polygon`] may have.
+pub const MAX_POLYGON_VERTICES: usize = 64;
+
+/// What "covered area" means for an edge pixel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
+pub enum PixelModel {
+    /// Square pixel, exact area (within 1/4096 px).
+    #[default]
+    Box,
+    /// Square pixel, the single formula of seed 001 (error up to `k/8` of a
+    /// pixel for an edge of slope `k <= 1`; see [`AreaMode`]).
+    BoxSeed,
+}
+
+/// How primitives are drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct RenderStyle {
+    /// `false`: aliased, pixel centres sampled with the top-left rule.
+    pub antialias: bool,
+    /// The pixel model used when `antialias` is on.
+    pub model: PixelModel,
+}
+
+impl Default for RenderStyle {
+    /// Anti-aliased, exact box coverage.
+    fn default() -> Self {
+        Self {
+            antialias: true,
+            model: PixelModel::Box,
+        }
+    }
+}
+
+impl RenderStyle {
+    /// Aliased drawing (top-left fill rule).
+    pub const ALIASED: Self = Self {
+        antialias: false,
+        model: PixelModel::Box,
+    };
+}
+
+/// Why a primitive was not drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum DrawError {
+    /// A vertex is outside the accepted coordinate range.
+    Coord(CoordError),
+    /// More than [`MAX_POLYGON_VERTICES`] vertices.
+    TooManyVertices,
+    /// Per-vertex colours given for a different number of vertices.
+    ColorCount,
+    /// Two non-adjacent edges of the polygon touch or cross.
+    SelfIntersecting,
+}
+
+impl From<CoordError> for DrawError {
+    fn from(e: CoordError) -> Self {
+        Self::Coord(e)
+    }
+}
+
+/// A triangle with a linear 12-bit colour per vertex (Gouraud shading).
+///
+/// ```
+/// use softedge::{Band, BandBuffer, RenderStyle, SubPoint, Triangle};
+/// let band = Band { width: 8, y0: 0, rows: 8 };
+/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 64]);
+/// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
+/// buf.clear([0]);
+/// // Half of pixel (0, 0), exactly: the triangle (0,0) (1,0) (0,1) px.
+/// let t = Triangle::flat([SubPoint::from_px(0, 0), SubPoint::from_px(1, 0), SubPoint::from_px(0, 1)], [4000]);
+/// t.draw(&mut buf, &RenderStyle::default()).unwrap();
+/// assert_eq!(buf.lin12(0, 0), Some([2000]));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Triangle<const C: usize> {
+    /// Vertices, in either orientation.
+    pub vertices: [SubPoint; 3],
+    /// Linear 12-bit colour of each vertex.
+    pub colors: [[u16; C]; 3],
+}
+
+impl<const C: usize> Triangle<C> {
+    /// A Gouraud-shaded triangle.
+    pub const fn new(vertices: [SubPoint; 3], colors: [[u16; C]; 3]) -> Self {
+        Self { vertices, colors }
+    }
+
+    /// A flat-coloured triangle.
+    pub const fn flat(vertices: [SubPoint; 3], color: [u16; C]) -> Self {
+        Self {
+            vertices,
+            colors: [color; 3],
+        }
+    }
+
+    /// Accumulates the triangle into the band.
+    pub fn draw(&self, band: &mut BandBuffer<'_, C>, style: &RenderStyle) -> Result<(), DrawError> {
+        for v in self.vertices {
+            v.check()?;
+        }
+        let bg = band.background();
+        let Some(plane) = Plane::triangle(self.vertices, self.colors, bg) else {
+            return Ok(());
+        };
+        fill(band, &self.vertices, &plane, style);
+        Ok(())
+    }
+}
+
+/// The colours of a [`Polygon`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PolygonColors<'a, const C: usize> {
+    /// One colour for the whole polygon.
+    Flat([u16; C]),
+    /// One colour per vertex (Gouraud; the polygon is split into triangles
+    /// along its diagonals, which the accumulation makes seamless).
+    PerVertex(&'a [[u16; C]]),
+}
+
+/// A simple polygon, convex or concave, of up to [`MAX_POLYGON_VERTICES`]
+/// vertices.
+///
+/// ```
+/// use softedge::{Band, BandBuffer, Polygon, PolygonColors, RenderStyle, SubPoint};
+/// let band = Band { width: 8, y0: 0, rows: 8 };
+/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 64]);
+/// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
+/// buf.clear([0]);
+/// let l_shape = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)].map(|(x, y)| SubPoint::from_px(x, y));
+/// Polygon::new(&l_shape, PolygonColors::Flat([4095])).draw(&mut buf, &RenderStyle::default()).unwrap();
+/// assert_eq!(buf.lin12(3, 1), Some([4095]));
+/// assert_eq!(buf.lin12(3, 3), Some([0]));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Polygon<'a, const C: usize> {
+    /// Vertices in order, either orientation; the last joins the first.
+    pub vertices: &'a [SubPoint],
+    /// Colours.
+    pub colors: PolygonColors<'a, C>,
+}
+
+impl<'a, const C: usize> Polygon<'a, C> {
+    /// A polygon.
+    pub const fn new(vertices: &'a [SubPoint], colors: PolygonColors<'a, C>) -> Self {
+        Self { vertices, colors }
+    }
+
+    /// Accumulates the polygon into the band.
+    pub fn draw(&self, band: &mut BandBuffer<'_, C>, style: &RenderStyle) -> Result<(), DrawError> {
+        let v = self.vertices;
+        if v.len() > MAX_POLYGON_VERTICES {
+            return Err(DrawError::TooManyVertices);
+        }
+        if let PolygonColors::PerVertex(c) = self.colors {
+            if c.len() != v.len() {
+                return Err(DrawError::ColorCount);
+            }
+        }
+        for p in v {
+            p.check()?;
+        }
+        if v.len() < 3 || area2(v) == 0 {
+            return Ok(());
+        }
+        if !simple::is_simple(v) {
+            return Err(DrawError::SelfIntersecting);
+        }
+        let bg = band.background();
+        let flat = match self.colors {
+            PolygonColors::Flat(c) => Some(c),
+            PolygonColors::PerVertex(c) => c.iter().all(|x| *x == c[0]).then(|| c[0]),
+        };
+        match (flat, self.colors) {
+            (Some(color), _) => fill(band, v, &Plane::flat(color, bg), style),
+            (None, PolygonColors::PerVertex(colors)) => {
+                let ok = simple::ear_clip::<MAX_POLYGON_VERTICES>(v, |[a, b, c]| {
+                    let tri = [v[a], v[b], v[c]];
+                    if let Some(plane) = Plane::triangle(tri, [colors[a], colors[b], colors[c]], bg)
+                    {
+                        fill(band, &tri, &plane, style);
+                    }
+                });
+                if !ok {
+                    return Err(DrawError::SelfIntersecting);
+                }
+            }
+            (None, PolygonColors::Flat(_)) => {}
+        }
+        Ok(())
+    }
+}
+
+/// A line 1 px wide, with butt ends, its colour interpolated from `from` to
+/// `to`.
+///
+/// It is drawn as the rectangle of width 1 centred on the segment (corners
+/// rounded to 1/16 px), so its summed intensity equals its length times its
+/// colour whatever its angle or sub-pixel position.
+///
+/// ```
+/// use softedge::{Band, BandBuffer, Line, RenderStyle, SubPoint};
+/// let band = Band { width: 8, y0: 0, rows: 4 };
+/// let (mut acc, mut cover) = ([0i32; 32], [0i32; 32]);
+/// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
+/// buf.clear([0]);
+/// // Horizontal, on the boundary between rows 1 and 2: half in each.
+/// Line::new(SubPoint::from_px(1, 2), SubPoint::from_px(7, 2), [[4094], [4094]])
+///     .draw(&mut buf, &RenderStyle::default())
+///     .unwrap();
+/// assert_eq!(buf.lin12(3, 1), Some([2047]));
+/// assert_eq!(buf.lin12(3, 2), Some([2047]));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Line<const C: usize> {
+    /// Start point.
+    pub from: SubPoint,
+    /// End point.
+    pub to: SubPoint,
+    /// Linear 12-bit colours at `from` and `to`.
+    pub colors: [[u16; C]; 2],
+}
+
+impl<const C: usize> Line<C> {
+    /// A line.
+    pub const fn new(from: SubPoint, to: SubPoint, colors: [[u16; C]; 2]) -> Self {
+        Self { from, to, colors }
+    }
+
+    /// Accumulates the line into the band.
+    pub fn draw(&self, band: &mut BandBuffer<'_, C>, style: &RenderStyle) -> Result<(), DrawError> {
+        self.from.check()?;
+        self.to.check()?;
+        let (dx, dy) = (
+            i64::from(self.to.x) - i64::from(self.from.x),
+            i64::from(self.to.y) - i64::from(self.from.y),
+        );
+        let len = ((dx * dx + dy * dy) as u64).isqrt() as i64;
+        if len == 0 {
+            return Ok(());
+        }
+        // Half the width, 1/2 px, along the normal; rounded to 1/16 px.
+        let half = i64::from(crate::SUB_ONE / 2);
+        let nx = ((-dy * half * 2 + len).div_euclid(2 * len)) as i32;
+        let ny = ((dx * half * 2 + len).div_euclid(2 * len)) as i32;
+        let (a, b) = (self.from, self.to);
+        let quad = [
+            SubPoint::new(a.x + nx, a.y + ny),
+            SubPoint::new(b.x + nx, b.y + ny),
+            SubPoint::new(b.x - nx, b.y - ny),
+            SubPoint::new(a.x - nx, a.y - ny),
+        ];
+        let [c0, c1] = self.colors;
+        let Some(plane) =
+            Plane::triangle([quad[0], quad[1], quad[2]], [c0, c1, c1], band.background())
+        else {
+            return Ok(());
+        };
+        fill(band, &quad, &plane, style);
+        Ok(())
+    }
+}
+
+/// Walks every edge of a closed outline sharing one plane, then sweeps its
+/// spans. The outline must be simple (or a triangle).
+fn fill<const C: usize>(
+    band: &mut BandBuffer<'_, C>,
+    v: &[SubPoint],
+    plane: &Plane<C>,
+    style: &RenderStyle,
+) {
+    let info = band.band();
+    let (mut x_min, mut x_max, mut y_min, mut y_max) = (i32::MAX, i32::MIN, i32::MAX, i32::MIN);
+    for p in v {
+        x_min = x_min.min(p.x);
+        x_max = x_max.max(p.x);
+        y_min = y_min.min(p.y);
+        y_max = y_max.max(p.y);
+    }
+    let band_end = info.y0 + i32::from(info.rows);
+    let rows = (y_min >> SUB_BITS).max(info.y0)..((y_max >> SUB_BITS) + 1).min(band_end);
+    if rows.start >= rows.end || (x_min >> SUB_BITS) >= i32::from(info.width) {
+        return;
+    }
+    // Inside lies right of edges that run down the screen for a
+    // counter-clockwise (negative area) outline.
+    let orientation = if area2(v) > 0 { -1 } else { 1 };
+    let mode = match style.model {
+        PixelModel::Box => AreaMode::Exact,
+        PixelModel::BoxSeed => AreaMode::SeedFormula,
+    };
+    let n = v.len();
+    for k in 0..n {
+        let (p0, p1) = (v[k], v[(k + 1) % n]);
+        if style.antialias {
+            walk_edge(p0, p1, orientation, plane, mode, rows.clone(), band);
+        } else {
+            walk_edge_aliased::<C, _>(p0, p1, orientation, rows.clone(), band);
+        }
+    }
+    band.sweep(
+        x_min >> SUB_BITS,
+        (x_max >> SUB_BITS) + 1,
+        rows.start,
+        rows.end,
+        plane,
+    );
+}
