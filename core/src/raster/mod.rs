@@ -98,7 +98,7 @@ impl From<CoordError> for DrawError {
 /// ```
 /// use softedge::{Band, BandBuffer, RenderStyle, SubPoint, Triangle};
 /// let band = Band { width: 8, y0: 0, rows: 8 };
-/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 64]);
+/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
 /// // Half of pixel (0, 0), exactly: the triangle (0,0) (1,0) (0,1) px.
@@ -159,7 +159,7 @@ pub enum PolygonColors<'a, const C: usize> {
 /// ```
 /// use softedge::{Band, BandBuffer, Polygon, PolygonColors, RenderStyle, SubPoint};
 /// let band = Band { width: 8, y0: 0, rows: 8 };
-/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 64]);
+/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
 /// let l_shape = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)].map(|(x, y)| SubPoint::from_px(x, y));
@@ -236,7 +236,7 @@ impl<'a, const C: usize> Polygon<'a, C> {
 /// ```
 /// use softedge::{Band, BandBuffer, Line, RenderStyle, SubPoint};
 /// let band = Band { width: 8, y0: 0, rows: 4 };
-/// let (mut acc, mut cover) = ([0i32; 32], [0i32; 32]);
+/// let (mut acc, mut cover) = ([0i32; 32], [0i32; 40]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
 /// // Horizontal, on the boundary between rows 1 and 2: half in each.
@@ -315,7 +315,9 @@ fn fill<const C: usize>(
     }
     let band_end = info.y0 + i32::from(info.rows);
     let rows = (y_min >> SUB_BITS).max(info.y0)..((y_max >> SUB_BITS) + 1).min(band_end);
-    if rows.start >= rows.end || (x_min >> SUB_BITS) >= i32::from(info.width) {
+    // Wholly above, below, right or left of the band: nothing to add (left
+    // of it, the edges' covers would cancel at column 0).
+    if rows.start >= rows.end || (x_min >> SUB_BITS) >= i32::from(info.width) || x_max < 0 {
         return;
     }
     // Inside lies right of edges that run down the screen for a
@@ -334,11 +336,5 @@ fn fill<const C: usize>(
             walk_edge_aliased::<C, _>(p0, p1, orientation, rows.clone(), band);
         }
     }
-    band.sweep(
-        x_min >> SUB_BITS,
-        (x_max >> SUB_BITS) + 1,
-        rows.start,
-        rows.end,
-        plane,
-    );
+    band.sweep(rows.start, rows.end, plane);
 }
