@@ -25,9 +25,10 @@ impl<const C: usize> BandBuffer<'_, C> {
         for y in y_lo..y_hi {
             let r = (y - self.band.y0) as usize;
             let scratch = r * (w + 2);
-            let Some(ext) = self.cover.get_mut(scratch + w..scratch + w + 2) else {
+            let Some(row_cover) = self.cover.get_mut(scratch..scratch + w + 2) else {
                 continue;
             };
+            let (deltas, ext) = row_cover.split_at_mut(w);
             let (lo, hi) = (
                 core::mem::replace(&mut ext[0], i32::MAX),
                 core::mem::replace(&mut ext[1], i32::MIN),
@@ -35,41 +36,42 @@ impl<const C: usize> BandBuffer<'_, C> {
             if lo > hi {
                 continue;
             }
+            // Events were clamped into the band at insertion: 0 <= lo <= hi < w.
             let (lo, hi) = (lo.max(0) as usize, (hi.max(0) as usize).min(w - 1));
+            let Some(row_acc) = self.acc.get_mut(r * w * C..(r + 1) * w * C) else {
+                continue;
+            };
             let mut c: i64 = 0;
-            let mut v = [0i64; C];
-            let mut dv = [0i64; C];
-            // Per-row setup: the plane at the first pixel of the sweep.
-            let mut i_here = plane.at(lo as i32, y);
             let mut x = lo;
-            while x < w && (x <= hi || c != 0) {
-                let d = match self.cover.get_mut(scratch + x) {
-                    Some(d) => core::mem::take(d),
-                    None => 0,
-                };
-                if d != 0 {
-                    // A new span: the only multiplies of the sweep.
-                    c += i64::from(d);
+            loop {
+                c += i64::from(core::mem::take(&mut deltas[x]));
+                // The span runs to the next cover change, or to the band's
+                // end if cover remains after the last one.
+                let mut next = x + 1;
+                while next <= hi && deltas[next] == 0 {
+                    next += 1;
+                }
+                let end = if next > hi && c != 0 { w } else { next };
+                if c != 0 {
+                    // Span setup: the only multiplies of the sweep.
+                    let i0 = plane.at(x as i32, y);
+                    let mut v = [0i64; C];
+                    let mut dv = [0i64; C];
                     for ch in 0..C {
-                        v[ch] = i_here[ch] * c;
+                        v[ch] = i0[ch] * c;
                         dv[ch] = gx[ch] * c;
                     }
-                }
-                if c != 0 {
-                    let k = (r * w + x) * C;
-                    if let Some(px) = self.acc.get_mut(k..k + C) {
+                    for px in row_acc[x * C..end * C].chunks_exact_mut(C) {
                         for ch in 0..C {
                             px[ch] = px[ch].saturating_add((v[ch] >> PLANE_FRAC) as i32);
+                            v[ch] += dv[ch];
                         }
                     }
-                    for ch in 0..C {
-                        v[ch] += dv[ch];
-                    }
                 }
-                for ch in 0..C {
-                    i_here[ch] += gx[ch];
+                if next > hi {
+                    break;
                 }
-                x += 1;
+                x = next;
             }
         }
     }

@@ -46,6 +46,11 @@ pub fn walk_edge<const C: usize, K: EdgeSink<C>>(
     rows: Range<i32>,
     sink: &mut K,
 ) {
+    // Rows the edge can touch; nothing to set up for an edge outside them.
+    let (top, bottom) = (p0.y.min(p1.y) >> SUB_BITS, p0.y.max(p1.y) >> SUB_BITS);
+    if bottom < rows.start || top >= rows.end {
+        return;
+    }
     let Some(e) = Canon::new(p0, p1) else {
         return;
     };

@@ -67,11 +67,35 @@ fn scene<const C: usize>() -> (Vec<Triangle<C>>, Vec<Line<C>>) {
     (tris, lines)
 }
 
-/// Renders the scene once, band by band; returns a checksum so nothing is
+/// A quadrilateral covering the whole frame with its corners at sub-pixel
+/// positions outside it: every pixel is an interior pixel of one span.
+fn fill_scene<const C: usize>() -> (Vec<Triangle<C>>, Vec<Line<C>>) {
+    let (w, h) = (i32::from(W) * 16, i32::from(H) * 16);
+    let v = [
+        SubPoint::new(-5, -3),
+        SubPoint::new(w + 7, -9),
+        SubPoint::new(w + 3, h + 5),
+        SubPoint::new(-9, h + 2),
+    ];
+    let c = |k: u16| [k * 900; C];
+    (
+        vec![
+            Triangle::new([v[0], v[1], v[2]], [c(1), c(2), c(3)]),
+            Triangle::new([v[0], v[2], v[3]], [c(1), c(3), c(4)]),
+        ],
+        vec![],
+    )
+}
+
+/// Renders a scene once, band by band; returns a checksum so nothing is
 /// optimised away.
 #[inline(never)]
-fn render_frame<const C: usize>() -> u64 {
-    let (tris, lines) = scene::<C>();
+fn render_frame<const C: usize>(fill: bool) -> u64 {
+    let (tris, lines) = if fill {
+        fill_scene::<C>()
+    } else {
+        scene::<C>()
+    };
     let mut acc = vec![0i32; BandBuffer::<C>::acc_len(W, BAND_ROWS)];
     let mut cover = vec![0i32; BandBuffer::<C>::cover_len(W, BAND_ROWS)];
     let style = RenderStyle::default();
@@ -153,7 +177,7 @@ fn counts<const C: usize>() -> (u64, u64) {
     (cells.0, swept)
 }
 
-fn callgrind(channels: &str, toggle: Option<&str>) -> Result<u64, String> {
+fn callgrind(channels: &str, scene: &str, toggle: Option<&str>) -> Result<u64, String> {
     let exe = std::env::current_exe().map_err(|e| e.to_string())?;
     let out = std::env::temp_dir().join(format!(
         "softedge-bench-{}-{channels}.out",
@@ -167,7 +191,7 @@ fn callgrind(channels: &str, toggle: Option<&str>) -> Result<u64, String> {
     }
     let status = cmd
         .arg(&exe)
-        .args(["run", channels])
+        .args(["run", channels, scene])
         .output()
         .map_err(|e| {
             format!("cannot run valgrind ({e}); install it with `apt-get install valgrind`")
@@ -189,36 +213,60 @@ fn callgrind(channels: &str, toggle: Option<&str>) -> Result<u64, String> {
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     if args.first().map(String::as_str) == Some("run") {
+        let fill = args.get(2).map(String::as_str) == Some("fill");
         let sum = match args.get(1).map(String::as_str) {
-            Some("3") => render_frame::<3>(),
-            _ => render_frame::<1>(),
+            Some("3") => render_frame::<3>(fill),
+            _ => render_frame::<1>(fill),
         };
         println!("checksum {sum}");
         return;
     }
     println!("softedge edge-engine instruction counts (valgrind callgrind; deterministic)");
     println!("scene: {W}x{H}, 288 Gouraud triangles sharing edges + 16 lines, bands of {BAND_ROWS} rows, exact box coverage");
+    println!(
+        "interior: the same frame filled by one Gouraud quadrilateral (two triangles), {} pixels",
+        u32::from(W) * u32::from(H)
+    );
     for channels in ["1", "3"] {
-        let (cells, swept) = if channels == "3" {
+        let (cells, _) = if channels == "3" {
             counts::<3>()
         } else {
             counts::<1>()
         };
-        let run = |t| callgrind(channels, t);
-        let (walk, sweep, frame) = match (
-            run(Some("*walk_edge*")),
-            run(Some("*sweep*")),
-            run(Some("*render_frame*")),
-        ) {
-            (Ok(a), Ok(b), Ok(c)) => (a, b, c),
-            (Err(e), ..) | (_, Err(e), _) | (.., Err(e)) => {
-                eprintln!("bench: {e}");
-                std::process::exit(1);
+        let run = |scene, t| callgrind(channels, scene, t);
+        let results = [
+            run("mesh", Some("*walk_edge*")),
+            run("mesh", Some("*render_frame*")),
+            run("fill", Some("*sweep*")),
+            run("fill", Some("*render_frame*")),
+        ];
+        let mut n = [0u64; 4];
+        for (slot, r) in n.iter_mut().zip(results) {
+            match r {
+                Ok(v) => *slot = v,
+                Err(e) => {
+                    eprintln!("bench: {e}");
+                    std::process::exit(1);
+                }
             }
-        };
+        }
+        let px = f64::from(W) * f64::from(H);
         println!("channels {channels}:");
-        println!("  edge walk   {walk:>11} instructions / {cells:>6} edge pixels  = {:>6.1} per edge pixel", walk as f64 / cells as f64);
-        println!("  span sweep  {sweep:>11} instructions / {swept:>6} swept pixels = {:>6.1} per swept pixel", sweep as f64 / swept as f64);
-        println!("  whole frame {frame:>11} instructions                        = {:>6.1} per frame pixel", frame as f64 / (f64::from(W) * f64::from(H)));
+        println!(
+            "  mesh edge walk  {:>10} instructions / {cells} edge pixels = {:.1} per edge pixel",
+            n[0],
+            n[0] as f64 / cells as f64
+        );
+        println!(
+            "  mesh frame      {:>10} instructions = {:.1} per frame pixel",
+            n[1],
+            n[1] as f64 / px
+        );
+        println!(
+            "  fill span sweep {:>10} instructions = {:.1} per interior pixel",
+            n[2],
+            n[2] as f64 / px
+        );
+        println!("  fill frame      {:>10} instructions = {:.1} per frame pixel (incl. clear and resolve)", n[3], n[3] as f64 / px);
     }
 }
