@@ -20,6 +20,8 @@
 //!    pixels, and the one rounding of the frame, at resolve.
 //! 5. [`raster`]: the primitives users draw (triangles, polygons, lines).
 //! 6. [`tone`]: γ tables and logarithmic intensity codes (seed 000).
+//! 7. `eg` (feature `embedded-graphics`, on by default): flushing each
+//!    finished band to any embedded-graphics `DrawTarget`.
 //!
 //! ```
 //! use softedge::{BandBuffer, Bands, RenderStyle, SubPoint, Triangle};
@@ -54,6 +56,8 @@
 
 pub mod band;
 pub mod edge;
+#[cfg(feature = "embedded-graphics")]
+pub mod eg;
 pub mod geom;
 pub mod raster;
 pub mod shade;
