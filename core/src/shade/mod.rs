@@ -135,6 +135,24 @@ impl<const C: usize> Plane<C> {
         out
     }
 
+    /// The plane times `num / den` (relative to the background; setup use).
+    pub fn scaled(&self, num: i64, den: i64) -> Self {
+        if den <= 0 || num < 0 {
+            return *self;
+        }
+        let f = |v: i32| {
+            div_round(i64::from(v) * num, den).clamp(i64::from(i32::MIN), i64::from(i32::MAX))
+                as i32
+        };
+        Self {
+            i0: self.i0,
+            j0: self.j0,
+            at0: self.at0.map(f),
+            gx: self.gx.map(f),
+            gy: self.gy.map(f),
+        }
+    }
+
     /// True when the plane is constant (a flat colour).
     pub fn is_flat(&self) -> bool {
         self.gx.iter().chain(self.gy.iter()).all(|&g| g == 0)
