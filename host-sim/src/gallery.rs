@@ -3,10 +3,10 @@
 //! | file | panels, left to right |
 //! | --- | --- |
 //! | `01-edges_aliased-vs-aa-exact-vs-aa-seed.png` | one scene (star polygon, 45° and near-horizontal edges, slivers, lines at 32 angles) drawn aliased, anti-aliased with exact box coverage, anti-aliased with the seed-001 single formula |
-//! | `02-edges-detail_aliased-vs-aa-exact-vs-aa-seed.png` | a 32x24 crop of the same three, magnified more |
+//! | `02-edges-detail_aliased-vs-aa-exact-vs-aa-seed-vs-diff.png` | a 32x24 crop of the same three around the 45° edge, magnified more, and the difference between the two anti-aliased modes times 8 |
 //! | `03-gouraud-gray.png` | gray Gouraud triangles, a linear ramp and a fan |
 //! | `04-gouraud-rgb_wheel-vs-triangle.png` | an RGB colour wheel (a fan of 36 triangles), an RGB triangle |
-//! | `05-seams_mesh-vs-polygon-vs-diff.png` | top row: a jittered mesh of 108 flat triangles, the same outline as one polygon, their difference; bottom row: the same for a fan of 64 triangles and a 64-gon |
+//! | `05-seams_triangles-vs-mesh-vs-polygon-vs-diff.png` | top row: a jittered mesh of 108 triangles each in its own colour (to show them), the same triangles in one flat colour, the outline as one polygon, the difference of the last two (any difference white); bottom row: the same for a fan of 64 triangles and a 64-gon |
 //!
 //! Every panel is rendered band by band ([`render`]), converted to sRGB by
 //! [`lin12_to_srgb8`](crate::image::lin12_to_srgb8), magnified by an integer
@@ -165,16 +165,28 @@ pub fn write_gallery(
 
     log(&format!("[2/{n}] edge detail, magnified"));
     let (cx, cy, cw, ch) = DETAIL;
-    let panels: Vec<Panel> = renders
+    let crops: Vec<LinImage<3>> = renders
         .iter()
-        .map(|(label, img)| Panel::new(label, img.crop(cx, cy, cw, ch).to_srgb8(), scale * 3))
+        .map(|(_, img)| img.crop(cx, cy, cw, ch))
         .collect();
+    let mut panels: Vec<Panel> = renders
+        .iter()
+        .zip(&crops)
+        .map(|((label, _), crop)| Panel::new(label, crop.to_srgb8(), scale * 3))
+        .collect();
+    if let Some((diff, _)) = crops[1].abs_diff(&crops[2], DETAIL_DIFF_GAIN) {
+        panels.push(Panel::new(
+            &format!("|EXACT-SEED| X{DETAIL_DIFF_GAIN}"),
+            diff.to_srgb8(),
+            scale * 3,
+        ));
+    }
     let sheet = compose(
-        &format!("DETAIL {cw}X{ch} PX AT ({cx},{cy}): 45 DEG EDGE, SLIVERS"),
+        &format!("DETAIL {cw}X{ch} PX AT ({cx},{cy}): 45 DEG EDGE (SEED WORST CASE)"),
         &[panels],
     );
     save(
-        "02-edges-detail_aliased-vs-aa-exact-vs-aa-seed.png",
+        "02-edges-detail_aliased-vs-aa-exact-vs-aa-seed-vs-diff.png",
         &sheet,
         log,
     )?;
@@ -214,37 +226,49 @@ pub fn write_gallery(
     log(&format!("[5/{n}] seams: mesh | one polygon | difference"));
     let mut rows = Vec::new();
     for (what, (tiles, outline)) in [("MESH", mesh_scenes()), ("FAN OF 64", fan_scenes())] {
-        let tiles = render(&tiles.with_band_rows(opts.band_rows));
-        let outline = render(&outline.with_band_rows(opts.band_rows));
-        let (tiles, outline) = match (tiles, outline) {
-            (Ok(t), Ok(o)) => (t, o),
-            (Err(source), _) | (_, Err(source)) => {
-                return Err(GalleryError::Render {
-                    image: "seams",
-                    source,
-                })
-            }
+        let err = |source| GalleryError::Render {
+            image: "seams",
+            source,
         };
-        let (diff, differ) = diff_panel(&tiles, &outline);
+        let shown = render(&patchwork(&tiles).with_band_rows(opts.band_rows)).map_err(err)?;
+        let tiles_img = render(&tiles.with_band_rows(opts.band_rows)).map_err(err)?;
+        let outline_img = render(&outline.with_band_rows(opts.band_rows)).map_err(err)?;
+        let (diff, differ) = diff_panel(&tiles_img, &outline_img);
+        // The aliased walk must tile as well (top-left rule).
+        let aliased = |s: &Scene<3>| render(&s.with_style(RenderStyle::ALIASED)).map_err(err);
+        let (_, differ_aliased) = diff_panel(&aliased(&tiles)?, &aliased(&outline)?);
         log(&format!(
-            "      {} vs one polygon: {differ} of {} pixels differ",
+            "      {} vs one polygon: {differ} of {} pixels differ anti-aliased, {differ_aliased} aliased",
             what.to_lowercase(),
-            tiles.width() * tiles.height()
+            tiles_img.width() * tiles_img.height()
         ));
         rows.push(vec![
-            Panel::new(what, tiles.to_srgb8(), scale),
-            Panel::new("ONE POLYGON", outline.to_srgb8(), scale),
+            Panel::new(
+                &format!("{what}: {} TRIANGLES", tiles.primitives.len()),
+                shown.to_srgb8(),
+                scale,
+            ),
+            Panel::new("ONE COLOUR", tiles_img.to_srgb8(), scale),
+            Panel::new("ONE POLYGON", outline_img.to_srgb8(), scale),
             Panel::new(&format!("DIFF: {differ} PX"), diff.to_srgb8(), scale),
         ]);
     }
     let sheet = compose("SEAMS: TILES VS ONE POLYGON, FLAT COLOUR", &rows);
-    save("05-seams_mesh-vs-polygon-vs-diff.png", &sheet, log)?;
+    save(
+        "05-seams_triangles-vs-mesh-vs-polygon-vs-diff.png",
+        &sheet,
+        log,
+    )?;
 
     Ok(written)
 }
 
 /// The crop of the edge scene shown magnified: `(x, y, w, h)`.
 const DETAIL: (u32, u32, u32, u32) = (36, 2, 32, 24);
+
+/// Gain of the detail difference panel: the seed formula's worst error,
+/// 1/8 of full scale at 45°, shows as full white.
+const DETAIL_DIFF_GAIN: u32 = 8;
 
 /// A labelled, magnified panel.
 struct Panel {
@@ -363,7 +387,9 @@ fn edges_scene() -> Scene<3> {
     s.primitives.push(Primitive::flat_polygon(star, white));
     // Right triangle with a 45° hypotenuse, off the pixel grid.
     s.primitives.push(Primitive::Triangle(Triangle::flat(
-        [sp(40.3, 4.3), sp(62.3, 4.3), sp(62.3, 26.3)],
+        // Half a pixel between the x and y offsets: the hypotenuse crosses
+        // row boundaries at column centres, the seed formula's worst case.
+        [sp(40.3, 3.8), sp(62.3, 3.8), sp(62.3, 25.8)],
         white,
     )));
     // A wedge whose two edges are near-horizontal (slope ±1/20).
@@ -471,6 +497,20 @@ fn rgb_triangle_scene() -> Scene<3> {
 
 const MESH_BG: [u16; 3] = [120, 220, 560];
 const MESH_FG: [u16; 3] = [4095, 1400, 160];
+
+/// The same scene with each primitive in its own colour (hues a golden
+/// ratio apart, at 3/4 intensity), to show the tiling.
+fn patchwork(s: &Scene<3>) -> Scene<3> {
+    let mut out = s.clone();
+    for (k, p) in out.primitives.iter_mut().enumerate() {
+        let hue = (k as f64 * 0.618_034).fract();
+        let c = hue_lin(hue).map(|v| v - v / 4);
+        if let Primitive::Triangle(t) = p {
+            t.colors = [c; 3];
+        }
+    }
+    out
+}
 
 /// A deterministic generator for jitter (xorshift32).
 struct Jitter(u32);
