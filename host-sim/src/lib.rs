@@ -42,3 +42,8 @@ pub mod gallery;
 pub mod image;
 pub mod png_out;
 pub mod scene;
+
+/// The repository README's code blocks, compiled and run as doc tests.
+#[cfg(doctest)]
+#[doc = include_str!("../../README.md")]
+pub struct ReadmeDoctests;
