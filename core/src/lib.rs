@@ -29,8 +29,8 @@
 //! const W: usize = 32;
 //! const H: usize = 16;
 //! const ROWS: usize = 8;
-//! let mut acc = [0i32; W * ROWS];
-//! let mut cover = [0i32; (W + 2) * ROWS];
+//! let mut acc = [0i32; BandBuffer::<1>::acc_len(W as u16, ROWS as u16)];
+//! let mut cover = [0i32; BandBuffer::<1>::cover_len(W as u16, ROWS as u16)];
 //! let tri = Triangle::new(
 //!     [SubPoint::from_px(2, 1), SubPoint::new(29 * 16 + 5, 7 * 16), SubPoint::from_px(8, 15)],
 //!     [[4095], [2048], [0]],

@@ -665,9 +665,12 @@ mod tests {
         let aliased = render(&s.with_style(RenderStyle::ALIASED)).unwrap();
         let exact = render(&s).unwrap();
         assert_ne!(aliased, exact);
-        // The same shapes: summed linear intensity within 1 %.
+        // The same shapes: summed linear intensity within 2 % (aliased
+        // lines cover their rectangles with corners rounded to 1/16 px,
+        // whose width is off by up to 7 % at some angles; anti-aliased lines
+        // are scaled back to their ideal energy).
         let (a, e) = (aliased.sum() as f64, exact.sum() as f64);
-        assert!((a - e).abs() / e < 0.01, "aliased {a} vs exact {e}");
+        assert!((a - e).abs() / e < 0.02, "aliased {a} vs exact {e}");
     }
 
     #[test]

@@ -247,9 +247,9 @@ impl<'a, const C: usize> Polygon<'a, C> {
 /// `to`.
 ///
 /// It is drawn as the rectangle of width 1 centred on the segment (corners
-/// rounded to 1/16 px, intensity scaled once by the ratio of the ideal to
-/// the rounded area), so its summed intensity equals its length times its
-/// colour whatever its angle or sub-pixel position.
+/// rounded to 1/16 px; anti-aliased, its intensity is scaled once by the
+/// ratio of the ideal to the rounded area), so its summed intensity equals
+/// its length times its colour whatever its angle or sub-pixel position.
 ///
 /// ```
 /// use softedge::{Band, BandBuffer, Line, RenderStyle, SubPoint};
@@ -316,7 +316,12 @@ impl<const C: usize> Line<C> {
         let len_256 = (((dx * dx + dy * dy) as u64) << 16).isqrt() as i64;
         let ideal = i64::from(crate::SUB_ONE) * len_256;
         let actual = 2 * (dx * i64::from(ny) - dy * i64::from(nx)).abs() * 256;
-        let plane = plane.scaled(ideal, actual);
+        // (Aliased lines keep their colour: their energy is a pixel count.)
+        let plane = if style.antialias {
+            plane.scaled(ideal, actual)
+        } else {
+            plane
+        };
         fill(band, &quad, &plane, style);
         Ok(())
     }
