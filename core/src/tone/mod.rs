@@ -38,6 +38,7 @@ pub mod gamma;
 pub mod log_code;
 
 pub use gamma::{Curve, Gamma, GammaLut};
+pub use log_code::{GaussLog, LogOutputLut, LogScale, LogValue, PotentiationLut};
 
 pub use crate::shade::LIN_MAX;
 
