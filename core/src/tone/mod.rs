@@ -37,6 +37,8 @@ pub mod format;
 pub mod gamma;
 pub mod log_code;
 
+pub use bits::{levels, BitDepth};
+pub use dither::{Bayer8, FloydSteinberg};
 pub use gamma::{Curve, Gamma, GammaLut};
 pub use log_code::{GaussLog, LogOutputLut, LogScale, LogValue, PotentiationLut};
 
