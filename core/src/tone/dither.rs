@@ -250,6 +250,23 @@ mod tests {
         }
     }
 
+    #[cfg(feature = "embedded-graphics")]
+    #[test]
+    fn binary_color_comes_from_bool() {
+        use embedded_graphics_core::pixelcolor::BinaryColor;
+        let mut out = [BinaryColor::Off; 4];
+        Bayer8::new().row(&[[4095], [0], [4095], [0]], 0, 0, &mut out);
+        assert_eq!(
+            out,
+            [
+                BinaryColor::On,
+                BinaryColor::Off,
+                BinaryColor::On,
+                BinaryColor::Off
+            ]
+        );
+    }
+
     #[test]
     fn floyd_steinberg_handles_mismatched_lengths() {
         let mut err = [0i16; 3];
