@@ -56,6 +56,7 @@ pub mod band;
 pub mod edge;
 pub mod geom;
 pub mod raster;
+pub mod scene3d;
 pub mod shade;
 pub mod tone;
 
