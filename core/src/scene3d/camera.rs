@@ -13,7 +13,8 @@
 //!   per world unit, `0 < s <= MAX_PX_PER_UNIT`;
 //! - perspective: `x_px = W/2 + f x / d`, `y_px = H/2 - f y / d`, with the
 //!   focal length `f = (H/2) / tan(fov_y / 2)` pixels, `0 < fov_y < 180`
-//!   degrees and `f <= MAX_FOCAL_PX`.
+//!   degrees and `f <= MAX_FOCAL_PX`; the half angle is `fov_y.0 / 2`
+//!   units, rounded down.
 //!
 //! Positions are rounded to 1/16 px; a vertex outside `±COORD_LIMIT_PX`
 //! makes its triangle be dropped (counted in

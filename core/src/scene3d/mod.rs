@@ -24,9 +24,10 @@
 //!    along the cut edges (always from the vertex in front, so an edge shared
 //!    by two triangles is cut at the very same point for both).
 //! 5. Projection to 1/16 px and depth ([`camera`](self::Camera)).
-//! 6. Back-face culling: triangles that do not run clockwise on screen
-//!    (the meshes wind counter-clockwise seen from outside; y grows
-//!    downwards) are skipped. This is hidden-surface removal for one convex
+//! 6. Back-face culling: the meshes wind counter-clockwise seen from
+//!    outside, so a triangle facing the camera runs counter-clockwise as
+//!    seen on the screen (negative twice-area in y-down coordinates);
+//!    the others, and edge-on ones, are skipped. This is hidden-surface removal for one convex
 //!    object only.
 //!
 //! ## Results for bad or awkward input (documented, never a panic)
@@ -70,6 +71,8 @@ mod mesh;
 mod trig;
 
 pub use camera::{Camera, Projection, View, MAX_FOCAL_PX, MAX_PX_PER_UNIT, MIN_UP_SIN_SHIFT};
+/// The Q16.16 number type of positions and sizes, re-exported from `fixed`.
+pub use fixed::types::I16F16;
 pub use math::{Transform, Vec3, MATRIX_LIMIT, WORLD_LIMIT};
 pub use mesh::{Mesh, MeshRef, Shape, Vertex, MAX_MESH_VERTICES, MAX_SEGMENTS, MIN_SEGMENTS};
 pub use trig::{sin_q16, Angle};
@@ -212,7 +215,8 @@ impl<const C: usize> ViewVertex<C> {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct ScreenTriangle<const C: usize> {
-    /// Vertices in 1/16 px, clockwise on screen, inside the coordinate range.
+    /// Vertices in 1/16 px, counter-clockwise as seen on screen, inside the
+    /// coordinate range.
     pub vertices: [SubPoint; 3],
     /// Linear 12-bit colour per vertex.
     pub colors: [[u16; C]; 3],
@@ -404,9 +408,9 @@ fn emit_triangle<const C: usize>(
     for k in 1..len.saturating_sub(1) {
         let idx = [0, k, k + 1];
         let vertices = idx.map(|i| screen[i].0);
-        // Counter-clockwise seen from outside becomes clockwise on screen
-        // (y down): positive area2 is front-facing.
-        if area2(&vertices) <= 0 {
+        // Counter-clockwise seen from outside stays counter-clockwise as
+        // seen on screen, which in y-down coordinates is a negative area2.
+        if area2(&vertices) >= 0 {
             stats.back_facing += 1;
             continue;
         }
