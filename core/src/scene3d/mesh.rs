@@ -259,7 +259,6 @@ impl Shape {
             } => cone(&mut w, radius, height, segments),
             Shape::Box { size, segments } => cuboid(&mut w, size, segments),
         }
-        debug_assert_eq!((w.nv, w.nt), (nv, nt));
         Ok((w.nv, w.nt))
     }
 }
