@@ -60,6 +60,7 @@ pub mod edge;
 pub mod eg;
 pub mod geom;
 pub mod raster;
+pub mod scene3d;
 pub mod shade;
 pub mod tone;
 
