@@ -1,5 +1,5 @@
 //! Setup: exact area under the canonical line, for the end columns of an
-//! edge. Runs a few times per edge (i128 arithmetic, no per-pixel use).
+//! edge. Runs a few times per edge (one i64 division; no per-pixel use).
 
 use super::canon::Canon;
 
@@ -11,34 +11,39 @@ pub(crate) fn clamped_area(e: &Canon, ulo: i64, uhi: i64, vlo: i64, vhi: i64) ->
     if uhi <= ulo || h <= 0 {
         return 0;
     }
-    let (du, dv) = (i128::from(e.du), i128::from(e.dv));
-    let flat = |len: i64, v: i64| i128::from(len.max(0)) * i128::from((v - vlo).clamp(0, h));
-    // Everything is summed over the common denominator 2 * du * dv (or 1).
-    let den: i128 = if e.dv == 0 { 1 } else { 2 * du * dv };
-    let mut num: i128 = 0;
-    num += den * flat(uhi.min(e.u0) - ulo, e.v0);
-    num += den * flat(uhi - ulo.max(e.u1), e.v1);
+    let flat = |len: i64, v: i64| len.max(0) * (v - vlo).clamp(0, h);
+    // The two flat extensions beyond the end points, in sub-pixels².
+    let mut whole = flat(uhi.min(e.u0) - ulo, e.v0) + flat(uhi - ulo.max(e.u1), e.v1);
     let (p, q) = (ulo.max(e.u0), uhi.min(e.u1));
+    let mut part = 0i64;
+    let den = 2 * e.du * e.dv;
     if p < q {
         if e.dv == 0 {
-            num += flat(q - p, e.v0);
+            whole += flat(q - p, e.v0);
         } else {
-            let (p, q) = (i128::from(p), i128::from(q));
-            let (u0, v0) = (i128::from(e.u0), i128::from(e.v0));
-            let (vlo, vhi) = (i128::from(vlo), i128::from(vhi));
-            // u where the line meets vlo and vhi, as numerators over dv,
-            // clamped into [p, q].
-            let clamp = |n: i128| n.clamp(p * dv, q * dv);
-            let ua = clamp(u0 * dv + (vlo - v0) * du);
-            let ub = clamp(u0 * dv + (vhi - v0) * du);
-            // Middle piece: ∫ (v(u) - vlo) du over [ua, ub].
-            num += (ub - ua) * (2 * (v0 - vlo) * du + ua + ub - 2 * u0 * dv);
-            // Right piece: full height.
-            num += (q * dv - ub) * (vhi - vlo) * 2 * du;
+            // Relative to (p, vlo): v'(x) = (a + x) / du with x = (u - p) dv,
+            // so every term below is bounded by the cell, not by the
+            // coordinates: |x| <= 16 dv, |a + x| <= 16 du where it matters,
+            // and each product stays under 2^42.
+            let (du, dv) = (e.du, e.dv);
+            let a = e.v0 * du + (p - e.u0) * dv - vlo * du;
+            let x_end = (q - p) * dv;
+            // Where the line meets vlo (x = -a) and vhi (x = h du - a),
+            // clamped into the piece.
+            let xa = (-a).clamp(0, x_end);
+            let xb = (h * du - a).clamp(0, x_end);
+            // ∫ v' over [xa, xb] and the full height right of xb.
+            part = (xb - xa) * (2 * a + xa + xb) + (x_end - xb) * h * 2 * du;
         }
     }
-    let scaled = (16 * num).div_euclid(den);
-    scaled.clamp(i128::from(i32::MIN), i128::from(i32::MAX)) as i32
+    // In 1/4096 px: 16 per sub-pixel². `part` is over `den`.
+    let scaled = 16 * whole
+        + if den > 0 {
+            (16 * part).div_euclid(den)
+        } else {
+            0
+        };
+    scaled.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32
 }
 
 #[cfg(test)]

@@ -74,7 +74,8 @@
 //! `du, dv <= 2^16`; the numerators of `S` are below `2^41` and the
 //! products `P` below `2^43` (`i64`); remainders stay below `du` (`i64`,
 //! for simplicity of the carries); the exact areas of the end columns are
-//! computed in `i128`.
+//! computed relative to their cell, where every product stays below `2^42`
+//! (`i64`, one division per end cell).
 
 mod aliased;
 mod area;
