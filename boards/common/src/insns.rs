@@ -26,7 +26,10 @@ static WRAPS: AtomicU32 = AtomicU32::new(0);
 
 /// Call from the board's `SysTick` exception handler.
 pub fn on_wrap() {
-    WRAPS.store(WRAPS.load(Ordering::Relaxed).wrapping_add(1), Ordering::Relaxed);
+    WRAPS.store(
+        WRAPS.load(Ordering::Relaxed).wrapping_add(1),
+        Ordering::Relaxed,
+    );
 }
 
 /// Loop iterations of the two calibration runs: their difference, times the
@@ -65,14 +68,14 @@ impl Counter {
         let short = c.measure(|| spin(CAL_SHORT));
         let long = c.measure(|| spin(CAL_LONG));
         let ticks = long.saturating_sub(short);
-        if ticks > 0 {
-            // Snap to sixteenths of an instruction: the true ratio is
-            // 1 GHz / f_systick, a multiple of 1/16 for every SysTick clock
-            // dividing 16 GHz (16 MHz: 62.5, 25 MHz: 40), while the one-tick
-            // quantisation of the two readings moves the measured ratio by
-            // ratio / ticks < 1/1000 here, far under the 1/32 of rounding.
-            let insns = 2 * u64::from(CAL_LONG - CAL_SHORT);
-            let num = (insns * SNAP + ticks / 2) / ticks;
+        // Snap to sixteenths of an instruction: the true ratio is
+        // 1 GHz / f_systick, a multiple of 1/16 for every SysTick clock
+        // dividing 16 GHz (16 MHz: 62.5, 25 MHz: 40), while the one-tick
+        // quantisation of the two readings moves the measured ratio by
+        // ratio / ticks < 1/1000 here, far under the 1/32 of rounding.
+        // No ticks (SysTick not running): no calibration, counts read 0.
+        let insns = 2 * u64::from(CAL_LONG - CAL_SHORT);
+        if let Some(num) = (insns * SNAP + ticks / 2).checked_div(ticks) {
             let g = gcd(num, SNAP);
             c.num = num / g;
             c.den = SNAP / g;
@@ -103,7 +106,9 @@ impl Counter {
 
     /// Instructions in `ticks`, rounded to nearest; 0 without a calibration.
     pub fn insns(&self, ticks: u64) -> u64 {
-        (ticks * self.num + self.den / 2).checked_div(self.den).unwrap_or(0)
+        (ticks * self.num + self.den / 2)
+            .checked_div(self.den)
+            .unwrap_or(0)
     }
 
     /// The calibration, `(num, den)` instructions per tick.

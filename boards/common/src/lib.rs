@@ -39,7 +39,12 @@ pub fn run(acc: &mut [i32], cover: &mut [i32], counter: &insns::Counter) -> ! {
         let t1 = counter.ticks();
         *count = counter.insns(t1.saturating_sub(t0));
         match result {
-            Ok(crc) => Line::new().text("crc ").text(scene.name).text(" ").hex8(crc).print(),
+            Ok(crc) => Line::new()
+                .text("crc ")
+                .text(scene.name)
+                .text(" ")
+                .hex8(crc)
+                .print(),
             Err(_) => {
                 ok = false;
                 Line::new().text("error ").text(scene.name).print()
@@ -47,11 +52,24 @@ pub fn run(acc: &mut [i32], cover: &mut [i32], counter: &insns::Counter) -> ! {
         }
     }
     for (scene, &n) in SCENES.iter().zip(counts.iter()) {
-        Line::new().text("insns ").text(scene.name).text(" ").dec(n).print();
+        Line::new()
+            .text("insns ")
+            .text(scene.name)
+            .text(" ")
+            .dec(n)
+            .print();
     }
     let (num, den) = counter.insns_per_tick();
-    Line::new().text("insns_per_tick ").dec(num).text("/").dec(den).print();
-    Line::new().text("stack_bytes ").dec(stack::used_bytes() as u64).print();
+    Line::new()
+        .text("insns_per_tick ")
+        .dec(num)
+        .text("/")
+        .dec(den)
+        .print();
+    Line::new()
+        .text("stack_bytes ")
+        .dec(stack::used_bytes() as u64)
+        .print();
     exit(ok)
 }
 
@@ -74,7 +92,11 @@ fn panic(info: &core::panic::PanicInfo) -> ! {
     // Report where, then fail the run so CI never hangs on a panic.
     let mut line = Line::new().text("panic");
     if let Some(loc) = info.location() {
-        line = line.text(" ").text(loc.file()).text(":").dec(u64::from(loc.line()));
+        line = line
+            .text(" ")
+            .text(loc.file())
+            .text(":")
+            .dec(u64::from(loc.line()));
     }
     line.print();
     exit(false)
