@@ -1,0 +1,27 @@
+//! Renders every softedge reference scene on a Cortex-M0 (nRF51 of the BBC micro:bit)
+//! and prints the CRCs, instruction counts and stack depth over semihosting
+//! (see `softedge-board-common`). `cargo run --release` runs it in QEMU.
+#![no_std]
+#![no_main]
+
+use cortex_m_rt::{entry, exception};
+use softedge_board_common as fw;
+use softedge_refscenes::{ACC_LEN, COVER_LEN};
+
+#[entry]
+fn main() -> ! {
+    // cortex-m-rt turns these into `&'static mut`, safely (entry runs once).
+    static mut ACC: [i32; ACC_LEN] = [0; ACC_LEN];
+    static mut COVER: [i32; COVER_LEN] = [0; COVER_LEN];
+    fw::stack::paint();
+    let Some(core) = cortex_m::Peripherals::take() else {
+        fw::exit(false)
+    };
+    let counter = fw::insns::Counter::start(core.SYST);
+    fw::run(ACC, COVER, &counter)
+}
+
+#[exception]
+fn SysTick() {
+    fw::insns::on_wrap();
+}

@@ -1,0 +1,24 @@
+//! Prints `crc <scene> <crc32, 8 hex digits>` for every reference scene,
+//! rendered on the host with the same code the boards run.
+//!
+//! `cargo run -p softedge-refscenes --example host_crc`
+
+use softedge_refscenes::{render_crc, ACC_LEN, COVER_LEN, SCENES};
+
+fn main() {
+    let mut acc = vec![0i32; ACC_LEN];
+    let mut cover = vec![0i32; COVER_LEN];
+    let mut failed = false;
+    for scene in SCENES {
+        match render_crc(scene, &mut acc, &mut cover) {
+            Ok(crc) => println!("crc {} {:08x}", scene.name, crc),
+            Err(e) => {
+                println!("error {} {:?}", scene.name, e);
+                failed = true;
+            }
+        }
+    }
+    if failed {
+        std::process::exit(1);
+    }
+}

@@ -1,0 +1,305 @@
+//! # softedge-refscenes
+//!
+//! The reference scenes that the host and the firmware boards render, as
+//! plain Rust data (consts in flash, no heap), and the one renderer they
+//! share: [`render_crc`] draws a scene band by band into caller-provided
+//! buffers and returns the CRC-32 of its display byte stream
+//! ([`stream::encode_row`]). Equal CRCs on the host, on Cortex-M0 and on
+//! Cortex-M3 are the bit-identity check of `DESIGN.md`.
+//!
+//! ```
+//! use softedge_refscenes::{render_crc, ACC_LEN, COVER_LEN, SCENES};
+//! let (mut acc, mut cover) = ([0i32; ACC_LEN], [0i32; COVER_LEN]);
+//! for scene in SCENES {
+//!     let crc = render_crc(scene, &mut acc, &mut cover).unwrap();
+//!     println!("crc {} {:08x}", scene.name, crc);
+//! }
+//! ```
+//!
+//! Buffers: a scene of `C` channels needs
+//! `BandBuffer::<C>::acc_len(width, band_rows)` and
+//! `BandBuffer::<C>::cover_len(width, band_rows)` `i32`s; [`ACC_LEN`] and
+//! [`COVER_LEN`] are the largest over [`SCENES`], so a firmware sizes its
+//! static buffers with them once.
+#![no_std]
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+
+mod crc;
+mod scenes;
+pub mod stream;
+
+pub use crc::{crc32, Crc32, POLY_REFLECTED, TABLE as CRC_TABLE};
+pub use scenes::{ALIASED, GOURAUD, LIMITS, LINES, MESH, ONEBIT, SEEDBOX};
+
+use softedge::{
+    BandBuffer, BandError, Bands, DrawError, Line, Polygon, PolygonColors, RenderStyle, SubPoint,
+    Triangle, MAX_POLYGON_VERTICES,
+};
+
+/// Widest scene [`render_crc`] accepts: the resolved row lives on the
+/// stack, `MAX_SCENE_WIDTH * 3 * 2` bytes.
+pub const MAX_SCENE_WIDTH: u16 = 128;
+
+/// Every reference scene, in the order the listings print them.
+pub const SCENES: &[&Scene] = &[
+    &GOURAUD, &MESH, &LINES, &ALIASED, &ONEBIT, &SEEDBOX, &LIMITS,
+];
+
+/// `i32`s of `acc` that every scene of [`SCENES`] fits in.
+pub const ACC_LEN: usize = max_len(SCENES, true);
+/// `i32`s of `cover` that every scene of [`SCENES`] fits in.
+pub const COVER_LEN: usize = max_len(SCENES, false);
+
+const fn max_len(scenes: &[&Scene], acc: bool) -> usize {
+    let mut max = 0;
+    let mut k = 0;
+    while k < scenes.len() {
+        let n = scenes[k].buffer_len(acc);
+        if n > max {
+            max = n;
+        }
+        k += 1;
+    }
+    max
+}
+
+/// A reference scene.
+#[derive(Debug, Clone, Copy)]
+pub struct Scene {
+    /// Name printed in the CRC listings (one word).
+    pub name: &'static str,
+    /// Frame width in pixels.
+    pub width: u16,
+    /// Frame height in pixels.
+    pub height: u16,
+    /// 1 (gray) or 3 (RGB).
+    pub channels: u8,
+    /// Rows per band.
+    pub band_rows: u16,
+    /// How the primitives are drawn.
+    pub style: RenderStyle,
+    /// Background, linear 12-bit (only the first `channels` are used).
+    pub background: [u16; 3],
+    /// What is drawn, in order.
+    pub shapes: &'static [Shape],
+}
+
+impl Scene {
+    /// `i32`s the scene needs in `acc` (`acc == true`) or `cover`, at its
+    /// own band height; 0 for an unsupported channel count.
+    pub const fn buffer_len(&self, acc: bool) -> usize {
+        let (w, r) = (self.width, self.band_rows);
+        match (self.channels, acc) {
+            (1, true) => BandBuffer::<1>::acc_len(w, r),
+            (1, false) => BandBuffer::<1>::cover_len(w, r),
+            (3, true) => BandBuffer::<3>::acc_len(w, r),
+            (3, false) => BandBuffer::<3>::cover_len(w, r),
+            _ => 0,
+        }
+    }
+}
+
+/// The fill of a [`Shape::Polygon`].
+#[derive(Debug, Clone, Copy)]
+pub enum Fill {
+    /// One colour.
+    Flat([u16; 3]),
+    /// One colour per vertex (as many as vertices).
+    PerVertex(&'static [[u16; 3]]),
+}
+
+/// One primitive of a scene. Colours are linear 12-bit, always given for
+/// three channels; a gray scene uses the first.
+#[derive(Debug, Clone, Copy)]
+pub enum Shape {
+    /// A Gouraud triangle.
+    Triangle([SubPoint; 3], [[u16; 3]; 3]),
+    /// A 1-px line, colour interpolated along it.
+    Line(SubPoint, SubPoint, [[u16; 3]; 2]),
+    /// A simple polygon.
+    Polygon(&'static [SubPoint], Fill),
+}
+
+/// Why a scene could not be rendered.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Error {
+    /// The band buffer could not be made (buffers too small, bad size).
+    Band(BandError),
+    /// A primitive was rejected by core.
+    Draw(DrawError),
+    /// `channels` is neither 1 nor 3.
+    Channels,
+    /// Wider than [`MAX_SCENE_WIDTH`].
+    TooWide,
+}
+
+impl From<BandError> for Error {
+    fn from(e: BandError) -> Self {
+        Self::Band(e)
+    }
+}
+
+impl From<DrawError> for Error {
+    fn from(e: DrawError) -> Self {
+        Self::Draw(e)
+    }
+}
+
+/// Renders `scene` band by band into `acc` / `cover` and returns the
+/// CRC-32 ([`Crc32`]) of its display byte stream ([`stream::encode_row`]).
+pub fn render_crc(scene: &Scene, acc: &mut [i32], cover: &mut [i32]) -> Result<u32, Error> {
+    render_crc_rows(scene, scene.band_rows, acc, cover)
+}
+
+/// [`render_crc`] with `band_rows` rows per band instead of the scene's
+/// own (the bytes must not depend on it).
+pub fn render_crc_rows(
+    scene: &Scene,
+    band_rows: u16,
+    acc: &mut [i32],
+    cover: &mut [i32],
+) -> Result<u32, Error> {
+    let mut crc = Crc32::new();
+    match scene.channels {
+        1 => render::<1>(scene, band_rows, acc, cover, &mut crc)?,
+        3 => render::<3>(scene, band_rows, acc, cover, &mut crc)?,
+        _ => return Err(Error::Channels),
+    }
+    Ok(crc.finish())
+}
+
+/// Renders `scene` into `sink`, band by band.
+pub fn render<const C: usize>(
+    scene: &Scene,
+    band_rows: u16,
+    acc: &mut [i32],
+    cover: &mut [i32],
+    sink: &mut impl stream::ByteSink,
+) -> Result<(), Error> {
+    if scene.width > MAX_SCENE_WIDTH {
+        return Err(Error::TooWide);
+    }
+    let mut row = [[0u16; C]; MAX_SCENE_WIDTH as usize];
+    let row = row
+        .get_mut(..usize::from(scene.width))
+        .ok_or(Error::TooWide)?;
+    for band in Bands::new(scene.width, scene.height, band_rows) {
+        let mut buf = BandBuffer::<C>::new(acc, cover, band)?;
+        buf.clear(channels(scene.background));
+        for shape in scene.shapes {
+            draw(shape, &mut buf, &scene.style)?;
+        }
+        for r in 0..band.rows {
+            let y = band.y0 + i32::from(r);
+            buf.resolve_row(y, row);
+            // Bands start at row 0 and stop at `height`, so `y` fits.
+            stream::encode_row(scene, y as u16, row, sink);
+        }
+    }
+    Ok(())
+}
+
+/// The first `C` of three channels (0 past the third).
+fn channels<const C: usize>(c: [u16; 3]) -> [u16; C] {
+    let mut out = [0u16; C];
+    for (o, v) in out.iter_mut().zip(c) {
+        *o = v;
+    }
+    out
+}
+
+fn draw<const C: usize>(
+    shape: &Shape,
+    buf: &mut BandBuffer<'_, C>,
+    style: &RenderStyle,
+) -> Result<(), DrawError> {
+    match *shape {
+        Shape::Triangle(v, c) => Triangle::new(v, c.map(channels)).draw(buf, style),
+        Shape::Line(a, b, c) => Line::new(a, b, c.map(channels)).draw(buf, style),
+        Shape::Polygon(v, Fill::Flat(c)) => {
+            Polygon::new(v, PolygonColors::Flat(channels(c))).draw(buf, style)
+        }
+        Shape::Polygon(v, Fill::PerVertex(c)) => {
+            let mut colors = [[0u16; C]; MAX_POLYGON_VERTICES];
+            for (o, &k) in colors.iter_mut().zip(c) {
+                *o = channels(k);
+            }
+            // More colours than MAX_POLYGON_VERTICES: core rejects the
+            // vertex count (or the count mismatch) itself.
+            let n = c.len().min(MAX_POLYGON_VERTICES);
+            let colors = colors.get(..n).unwrap_or(&[]);
+            Polygon::new(v, PolygonColors::PerVertex(colors)).draw(buf, style)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_scene_renders_and_fits_the_shared_buffers() {
+        let (mut acc, mut cover) = ([0i32; ACC_LEN], [0i32; COVER_LEN]);
+        for scene in SCENES {
+            assert!(scene.width <= MAX_SCENE_WIDTH, "{}", scene.name);
+            assert!(scene.buffer_len(true) > 0, "{}", scene.name);
+            render_crc(scene, &mut acc, &mut cover)
+                .unwrap_or_else(|e| panic!("{}: {e:?}", scene.name));
+        }
+    }
+
+    #[test]
+    fn scene_names_are_unique_words() {
+        for (i, a) in SCENES.iter().enumerate() {
+            assert!(!a.name.is_empty() && !a.name.contains(char::is_whitespace));
+            for b in &SCENES[i + 1..] {
+                assert_ne!(a.name, b.name);
+            }
+        }
+    }
+
+    /// Core promises the same bits whatever the band height: the display
+    /// stream of every scene is the same for 1 row, its own rows, and the
+    /// whole frame as one band.
+    #[test]
+    fn crc_does_not_depend_on_band_height() {
+        const BIG: usize = 3 * 128 * 64;
+        let mut acc = [0i32; BIG];
+        let mut cover = [0i32; 130 * 64];
+        for scene in SCENES {
+            let own = render_crc(scene, &mut acc, &mut cover).unwrap();
+            for rows in [1, 3, scene.height] {
+                let other = render_crc_rows(scene, rows, &mut acc, &mut cover).unwrap();
+                assert_eq!(own, other, "{} with {rows} rows", scene.name);
+            }
+        }
+    }
+
+    #[test]
+    fn short_buffers_are_an_error_not_a_panic() {
+        let (mut acc, mut cover) = ([0i32; 8], [0i32; 8]);
+        assert_eq!(
+            render_crc(&GOURAUD, &mut acc, &mut cover),
+            Err(Error::Band(BandError::AccTooSmall))
+        );
+    }
+
+    #[test]
+    fn scenes_are_not_blank() {
+        // A scene whose stream equals the bare background's tests nothing.
+        let (mut acc, mut cover) = ([0i32; ACC_LEN], [0i32; COVER_LEN]);
+        for scene in SCENES {
+            let blank = Scene {
+                shapes: &[],
+                ..**scene
+            };
+            assert_ne!(
+                render_crc(scene, &mut acc, &mut cover).unwrap(),
+                render_crc(&blank, &mut acc, &mut cover).unwrap(),
+                "{}",
+                scene.name
+            );
+        }
+    }
+}
