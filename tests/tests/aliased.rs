@@ -56,9 +56,12 @@ fn check_lit(v: &[(i64, i64)], f: &Frame<1>) -> Result<(), TestCaseError> {
 fn aliased_pixel_lit_iff_centre_inside_top_left() {
     let tri =
         prop::collection::vec(vertex(), 3).prop_filter("area", |v| cross(v[0], v[1], v[2]) != 0);
-    TestRunner::new(Config::with_cases(128))
-        .run(&tri, |v| check_lit(&v, &draw_shape(&v)))
-        .unwrap();
+    TestRunner::new(Config {
+        failure_persistence: None,
+        ..Config::with_cases(512)
+    })
+    .run(&tri, |v| check_lit(&v, &draw_shape(&v)))
+    .unwrap();
 }
 
 #[test]
@@ -67,9 +70,12 @@ fn aliased_polygon_lit_iff_centre_inside_top_left() {
         .prop_filter_map("star", |(c, pts)| {
             star_polygon((16 * c.0 + 8, 16 * c.1 + 3), &pts)
         });
-    TestRunner::new(Config::with_cases(64))
-        .run(&poly, |v| check_lit(&v, &draw_shape(&v)))
-        .unwrap();
+    TestRunner::new(Config {
+        failure_persistence: None,
+        ..Config::with_cases(256)
+    })
+    .run(&poly, |v| check_lit(&v, &draw_shape(&v)))
+    .unwrap();
 }
 
 #[test]
@@ -80,32 +86,35 @@ fn aliased_shared_edge_claims_every_centre_once() {
         let s = cross(v[0], v[1], v[2]).signum();
         s != 0 && (0..4).all(|k| cross(v[k], v[(k + 1) % 4], v[(k + 2) % 4]).signum() == s)
     });
-    TestRunner::new(Config::with_cases(128))
-        .run(&quad, |v| {
-            let t1 = [v[0], v[1], v[2]];
-            let t2 = [v[0], v[2], v[3]];
-            let (f1, f2) = (draw_shape(&t1), draw_shape(&t2));
-            let both = render(W, H, 5, [0], |buf| {
-                for t in [t1, t2] {
-                    let p = t.map(|(x, y)| SubPoint::new(x as i32, y as i32));
-                    Triangle::flat(p, [4095])
-                        .draw(buf, &RenderStyle::ALIASED)
-                        .unwrap();
-                }
-            });
-            for y in 0..i32::from(H) {
-                for x in 0..i32::from(W) {
-                    let (a, b) = (f1.raw_at(x, y)[0] == FULL, f2.raw_at(x, y)[0] == FULL);
-                    prop_assert!(!(a && b), "pixel {},{} claimed twice: {:?}", x, y, v);
-                    let inside = centre_inside_top_left(&v, i64::from(x), i64::from(y));
-                    prop_assert_eq!(a || b, inside, "pixel {},{} of {:?}", x, y, v);
-                    let want = if inside { FULL } else { 0 };
-                    prop_assert_eq!(both.raw_at(x, y)[0], want);
-                }
+    TestRunner::new(Config {
+        failure_persistence: None,
+        ..Config::with_cases(512)
+    })
+    .run(&quad, |v| {
+        let t1 = [v[0], v[1], v[2]];
+        let t2 = [v[0], v[2], v[3]];
+        let (f1, f2) = (draw_shape(&t1), draw_shape(&t2));
+        let both = render(W, H, 5, [0], |buf| {
+            for t in [t1, t2] {
+                let p = t.map(|(x, y)| SubPoint::new(x as i32, y as i32));
+                Triangle::flat(p, [4095])
+                    .draw(buf, &RenderStyle::ALIASED)
+                    .unwrap();
             }
-            Ok(())
-        })
-        .unwrap();
+        });
+        for y in 0..i32::from(H) {
+            for x in 0..i32::from(W) {
+                let (a, b) = (f1.raw_at(x, y)[0] == FULL, f2.raw_at(x, y)[0] == FULL);
+                prop_assert!(!(a && b), "pixel {},{} claimed twice: {:?}", x, y, v);
+                let inside = centre_inside_top_left(&v, i64::from(x), i64::from(y));
+                prop_assert_eq!(a || b, inside, "pixel {},{} of {:?}", x, y, v);
+                let want = if inside { FULL } else { 0 };
+                prop_assert_eq!(both.raw_at(x, y)[0], want);
+            }
+        }
+        Ok(())
+    })
+    .unwrap();
 }
 
 #[test]

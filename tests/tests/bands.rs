@@ -105,12 +105,15 @@ const STYLES: [RenderStyle; 3] = [
 #[test]
 fn band_height_does_not_change_a_single_bit() {
     let strategy = (prop::collection::vec(prim(), 1..8), rgb(), 0usize..3);
-    TestRunner::new(Config::with_cases(48))
-        .run(&strategy, |(scene, bg, s)| {
-            check::<3>(&scene, bg, STYLES[s])?;
-            check::<1>(&scene, bg, STYLES[s])
-        })
-        .unwrap();
+    TestRunner::new(Config {
+        failure_persistence: None,
+        ..Config::with_cases(128)
+    })
+    .run(&strategy, |(scene, bg, s)| {
+        check::<3>(&scene, bg, STYLES[s])?;
+        check::<1>(&scene, bg, STYLES[s])
+    })
+    .unwrap();
 }
 
 #[test]

@@ -176,7 +176,10 @@ fn edge_area_sign_convention() {
 #[test]
 fn exact_edge_area_within_1_256() {
     let max = StdCell::new(0.0f64);
-    let mut runner = TestRunner::new(Config::with_cases(96));
+    let mut runner = TestRunner::new(Config {
+        failure_persistence: None,
+        ..Config::with_cases(384)
+    });
     runner
         .run(&edge_case(), |c| {
             let rec = walk(&c, AreaMode::Exact, rows_of(&c));
@@ -215,7 +218,10 @@ fn exact_edge_area_within_2_units_documented_bound() {
 #[test]
 fn seed_formula_edge_area_within_k_over_8() {
     let max_ratio = StdCell::new(0.0f64);
-    let mut runner = TestRunner::new(Config::with_cases(96));
+    let mut runner = TestRunner::new(Config {
+        failure_persistence: None,
+        ..Config::with_cases(384)
+    });
     runner
         .run(&edge_case(), |c| {
             let rec = walk(&c, AreaMode::SeedFormula, rows_of(&c));
@@ -327,7 +333,10 @@ fn check_values(c: &EdgeCase, mode: AreaMode) -> Result<f64, TestCaseError> {
 #[test]
 fn incremental_evaluator_equals_direct_formula() {
     let max = StdCell::new(0.0f64);
-    let mut runner = TestRunner::new(Config::with_cases(64));
+    let mut runner = TestRunner::new(Config {
+        failure_persistence: None,
+        ..Config::with_cases(256)
+    });
     runner
         .run(&edge_case(), |c| {
             let a = check_values(&c, AreaMode::Exact)?;
@@ -341,7 +350,10 @@ fn incremental_evaluator_equals_direct_formula() {
 
 #[test]
 fn walk_restricted_to_rows_equals_full_walk_in_those_rows() {
-    let mut runner = TestRunner::new(Config::with_cases(64));
+    let mut runner = TestRunner::new(Config {
+        failure_persistence: None,
+        ..Config::with_cases(256)
+    });
     runner
         .run(&(edge_case(), 0u32..1000, 1i32..20), |(c, start, len)| {
             let full = rows_of(&c);
@@ -379,4 +391,46 @@ fn walk_restricted_to_rows_equals_full_walk_in_those_rows() {
             Ok(())
         })
         .unwrap();
+}
+
+#[test]
+fn every_octant_is_exact_and_evaluated() {
+    // One edge per octant (and the axes), sub-pixel end points, both
+    // orientations, a Gouraud plane: area and value checks as above.
+    let dirs = [
+        (97, 13),
+        (13, 97),
+        (-13, 97),
+        (-97, 13),
+        (-97, -13),
+        (-13, -97),
+        (13, -97),
+        (97, -13),
+        (100, 0),
+        (0, 100),
+        (-100, 0),
+        (0, -100),
+        (77, 77),
+        (-77, 77),
+    ];
+    for (dx, dy) in dirs {
+        for scale in [1i64, 5, 40] {
+            for orientation in [1, -1] {
+                let p0 = (2403, 1999);
+                let c = EdgeCase {
+                    p0,
+                    p1: (p0.0 + dx * scale / 3, p0.1 + dy * scale / 3),
+                    orientation,
+                    colors: [[0, 4095, 1000], [4095, 0, 3000], [2000, 2000, 0]],
+                    bg: [100, 0, 4095],
+                };
+                for mode in [AreaMode::Exact, AreaMode::SeedFormula] {
+                    let (err, at) = max_area_error(&c, &walk(&c, mode, rows_of(&c)));
+                    let bound = if mode == AreaMode::Exact { 16 } else { 512 + 2 };
+                    assert!(err <= q(bound), "{mode:?} error {err} at {at:?} for {c:?}");
+                    check_values(&c, mode).unwrap();
+                }
+            }
+        }
+    }
 }

@@ -117,9 +117,12 @@ fn check(s: &Scene, style: RenderStyle) -> Result<(), TestCaseError> {
 
 #[test]
 fn shared_edge_coverage_sums_to_one() {
-    TestRunner::new(Config::with_cases(32))
-        .run(&scene(), |s| check(&s, RenderStyle::default()))
-        .unwrap();
+    TestRunner::new(Config {
+        failure_persistence: None,
+        ..Config::with_cases(128)
+    })
+    .run(&scene(), |s| check(&s, RenderStyle::default()))
+    .unwrap();
 }
 
 #[test]
@@ -128,14 +131,20 @@ fn shared_edge_coverage_sums_to_one_in_seed_mode() {
         antialias: true,
         model: PixelModel::BoxSeed,
     };
-    TestRunner::new(Config::with_cases(16))
-        .run(&scene(), |s| check(&s, style))
-        .unwrap();
+    TestRunner::new(Config {
+        failure_persistence: None,
+        ..Config::with_cases(48)
+    })
+    .run(&scene(), |s| check(&s, style))
+    .unwrap();
 }
 
 #[test]
 fn shared_edge_claims_each_centre_once_aliased() {
-    TestRunner::new(Config::with_cases(32))
-        .run(&scene(), |s| check(&s, RenderStyle::ALIASED))
-        .unwrap();
+    TestRunner::new(Config {
+        failure_persistence: None,
+        ..Config::with_cases(128)
+    })
+    .run(&scene(), |s| check(&s, RenderStyle::ALIASED))
+    .unwrap();
 }
