@@ -20,6 +20,8 @@
 //!    pixels, and the one rounding of the frame, at resolve.
 //! 5. [`raster`]: the primitives users draw (triangles, polygons, lines).
 //! 6. [`tone`]: γ tables and logarithmic intensity codes (seed 000).
+//! 7. `eg` (feature `embedded-graphics`, on by default): flushing each
+//!    finished band to any embedded-graphics `DrawTarget`.
 //!
 //! ```
 //! use softedge::{BandBuffer, Bands, RenderStyle, SubPoint, Triangle};
@@ -27,8 +29,8 @@
 //! const W: usize = 32;
 //! const H: usize = 16;
 //! const ROWS: usize = 8;
-//! let mut acc = [0i32; W * ROWS];
-//! let mut cover = [0i32; W * ROWS];
+//! let mut acc = [0i32; BandBuffer::<1>::acc_len(W as u16, ROWS as u16)];
+//! let mut cover = [0i32; BandBuffer::<1>::cover_len(W as u16, ROWS as u16)];
 //! let tri = Triangle::new(
 //!     [SubPoint::from_px(2, 1), SubPoint::new(29 * 16 + 5, 7 * 16), SubPoint::from_px(8, 15)],
 //!     [[4095], [2048], [0]],
@@ -54,8 +56,11 @@
 
 pub mod band;
 pub mod edge;
+#[cfg(feature = "embedded-graphics")]
+pub mod eg;
 pub mod geom;
 pub mod raster;
+pub mod scene3d;
 pub mod shade;
 pub mod tone;
 

@@ -131,9 +131,11 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         width as usize * rows as usize * C
     }
 
-    /// `i32`s needed for the `cover` scratch: one per pixel.
+    /// `i32`s needed for the `cover` scratch: one per pixel, and two per
+    /// row for the extent of the row's cover changes (so the span sweep
+    /// visits only the columns between a primitive's edges).
     pub const fn cover_len(width: u16, rows: u16) -> usize {
-        width as usize * rows as usize
+        (width as usize + 2) * rows as usize
     }
 
     /// A buffer for `band` over `acc` and `cover` (longer slices are fine).
@@ -150,13 +152,16 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         if cover.len() < cover_len {
             return Err(BandError::CoverTooSmall);
         }
-        cover[..cover_len].iter_mut().for_each(|c| *c = 0);
-        Ok(Self {
+        let mut buf = Self {
             acc,
             cover,
             band,
             background: [0; C],
-        })
+        };
+        for r in 0..band.rows {
+            buf.reset_row(usize::from(r));
+        }
+        Ok(buf)
     }
 
     /// The band this buffer holds.
@@ -258,9 +263,25 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         if r < 0 || r >= i32::from(self.band.rows) || x >= w {
             return;
         }
-        let k = r as usize * w as usize + x.max(0) as usize;
-        if let Some(c) = self.cover.get_mut(k) {
-            *c += delta;
+        let x = x.max(0);
+        let start = r as usize * (w as usize + 2);
+        if let Some(row) = self.cover.get_mut(start..start + w as usize + 2) {
+            row[x as usize] += delta;
+            let (lo, hi) = (w as usize, w as usize + 1);
+            row[lo] = row[lo].min(x);
+            row[hi] = row[hi].max(x);
+        }
+    }
+
+    /// Empties row `r` of the cover scratch's extent (the deltas are
+    /// cleared by the sweep as it reads them).
+    fn reset_row(&mut self, r: usize) {
+        let w = usize::from(self.band.width);
+        let start = r * (w + 2);
+        if let Some(row) = self.cover.get_mut(start..start + w + 2) {
+            row[..w].iter_mut().for_each(|c| *c = 0);
+            row[w] = i32::MAX;
+            row[w + 1] = i32::MIN;
         }
     }
 }
@@ -289,7 +310,7 @@ mod tests {
     #[test]
     fn short_buffers_and_bad_bands_are_errors() {
         let mut acc = [0i32; 8];
-        let mut cov = [0i32; 8];
+        let mut cov = [0i32; 12];
         let band = Band {
             width: 4,
             y0: 0,
@@ -323,7 +344,7 @@ mod tests {
     #[test]
     fn out_of_band_reads_are_none() {
         let mut acc = [0i32; 8];
-        let mut cov = [0i32; 8];
+        let mut cov = [0i32; 12];
         let mut b = BandBuffer::<1>::new(
             &mut acc,
             &mut cov,

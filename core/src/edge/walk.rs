@@ -36,6 +36,7 @@ const SUB: i64 = SUB_ONE as i64;
 /// walk_edge(e.0, e.1, 1, &Plane::flat([4095], [0]), AreaMode::Exact, 0..2, &mut sum);
 /// assert_eq!(sum.0, 11 * 4096);
 /// ```
+#[inline(never)] // a frame's edges: kept out of line so profiles can name it
 pub fn walk_edge<const C: usize, K: EdgeSink<C>>(
     p0: crate::SubPoint,
     p1: crate::SubPoint,
@@ -45,6 +46,11 @@ pub fn walk_edge<const C: usize, K: EdgeSink<C>>(
     rows: Range<i32>,
     sink: &mut K,
 ) {
+    // Rows the edge can touch; nothing to set up for an edge outside them.
+    let (top, bottom) = (p0.y.min(p1.y) >> SUB_BITS, p0.y.max(p1.y) >> SUB_BITS);
+    if bottom < rows.start || top >= rows.end {
+        return;
+    }
     let Some(e) = Canon::new(p0, p1) else {
         return;
     };

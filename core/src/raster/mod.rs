@@ -12,9 +12,15 @@
 //!   [`DrawError::Coord`], nothing drawn.
 //! - Zero area (fewer than 3 vertices, collinear or repeated vertices),
 //!   zero-length lines: `Ok`, nothing drawn.
-//! - A polygon whose non-adjacent edges touch or cross:
+//! - A polygon whose non-adjacent edges touch or cross (after repeated
+//!   consecutive vertices are dropped), a bow tie included:
 //!   [`DrawError::SelfIntersecting`], nothing drawn (its coverage would not
-//!   be an area).
+//!   be an area). A polygon whose vertices all lie on one line: `Ok`,
+//!   nothing drawn.
+//! - Gouraud intensity is the plane's value at the pixel centre (seed 001's
+//!   `I_i` of the edge pixel). Near a vertex a touched pixel's centre may lie
+//!   outside the primitive, where the plane is extrapolated by at most one
+//!   full scale; the resolve clamps the pixel to `0..=4095`.
 //! - Colours above 4095 are clamped to 4095.
 //! - Parts outside the frame or the band are clipped.
 //!
@@ -98,7 +104,7 @@ impl From<CoordError> for DrawError {
 /// ```
 /// use softedge::{Band, BandBuffer, RenderStyle, SubPoint, Triangle};
 /// let band = Band { width: 8, y0: 0, rows: 8 };
-/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 64]);
+/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
 /// // Half of pixel (0, 0), exactly: the triangle (0,0) (1,0) (0,1) px.
@@ -159,7 +165,7 @@ pub enum PolygonColors<'a, const C: usize> {
 /// ```
 /// use softedge::{Band, BandBuffer, Polygon, PolygonColors, RenderStyle, SubPoint};
 /// let band = Band { width: 8, y0: 0, rows: 8 };
-/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 64]);
+/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
 /// let l_shape = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)].map(|(x, y)| SubPoint::from_px(x, y));
@@ -195,32 +201,43 @@ impl<'a, const C: usize> Polygon<'a, C> {
         for p in v {
             p.check()?;
         }
-        if v.len() < 3 || area2(v) == 0 {
+        // Drop repeated consecutive vertices: they only add zero-length edges.
+        let mut pts: heapless::Vec<SubPoint, MAX_POLYGON_VERTICES> = heapless::Vec::new();
+        let mut cols: heapless::Vec<[u16; C], MAX_POLYGON_VERTICES> = heapless::Vec::new();
+        for (k, &p) in v.iter().enumerate() {
+            if pts.last() != Some(&p) {
+                let c = match self.colors {
+                    PolygonColors::Flat(c) => c,
+                    PolygonColors::PerVertex(cs) => cs.get(k).copied().unwrap_or([0; C]),
+                };
+                // Capacity is MAX_POLYGON_VERTICES, checked above.
+                let _ = pts.push(p);
+                let _ = cols.push(c);
+            }
+        }
+        while pts.len() > 1 && pts.first() == pts.last() {
+            pts.pop();
+            cols.pop();
+        }
+        if pts.len() < 3 || simple::collinear(&pts) {
             return Ok(());
         }
-        if !simple::is_simple(v) {
+        if !simple::is_simple(&pts) {
             return Err(DrawError::SelfIntersecting);
         }
         let bg = band.background();
-        let flat = match self.colors {
-            PolygonColors::Flat(c) => Some(c),
-            PolygonColors::PerVertex(c) => c.iter().all(|x| *x == c[0]).then(|| c[0]),
-        };
-        match (flat, self.colors) {
-            (Some(color), _) => fill(band, v, &Plane::flat(color, bg), style),
-            (None, PolygonColors::PerVertex(colors)) => {
-                let ok = simple::ear_clip::<MAX_POLYGON_VERTICES>(v, |[a, b, c]| {
-                    let tri = [v[a], v[b], v[c]];
-                    if let Some(plane) = Plane::triangle(tri, [colors[a], colors[b], colors[c]], bg)
-                    {
-                        fill(band, &tri, &plane, style);
-                    }
-                });
-                if !ok {
-                    return Err(DrawError::SelfIntersecting);
-                }
+        if cols.iter().all(|c| *c == cols[0]) {
+            fill(band, &pts, &Plane::flat(cols[0], bg), style);
+            return Ok(());
+        }
+        let ok = simple::ear_clip::<MAX_POLYGON_VERTICES>(&pts, |[a, b, c]| {
+            let tri = [pts[a], pts[b], pts[c]];
+            if let Some(plane) = Plane::triangle(tri, [cols[a], cols[b], cols[c]], bg) {
+                fill(band, &tri, &plane, style);
             }
-            (None, PolygonColors::Flat(_)) => {}
+        });
+        if !ok {
+            return Err(DrawError::SelfIntersecting);
         }
         Ok(())
     }
@@ -230,13 +247,14 @@ impl<'a, const C: usize> Polygon<'a, C> {
 /// `to`.
 ///
 /// It is drawn as the rectangle of width 1 centred on the segment (corners
-/// rounded to 1/16 px), so its summed intensity equals its length times its
-/// colour whatever its angle or sub-pixel position.
+/// rounded to 1/16 px; anti-aliased, its intensity is scaled once by the
+/// ratio of the ideal to the rounded area), so its summed intensity equals
+/// its length times its colour whatever its angle or sub-pixel position.
 ///
 /// ```
 /// use softedge::{Band, BandBuffer, Line, RenderStyle, SubPoint};
 /// let band = Band { width: 8, y0: 0, rows: 4 };
-/// let (mut acc, mut cover) = ([0i32; 32], [0i32; 32]);
+/// let (mut acc, mut cover) = ([0i32; 32], [0i32; 40]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
 /// // Horizontal, on the boundary between rows 1 and 2: half in each.
@@ -292,6 +310,18 @@ impl<const C: usize> Line<C> {
         else {
             return Ok(());
         };
+        // Rounding the corners to 1/16 px changes the rectangle's area by up
+        // to a few per cent, depending on the angle: scale the intensity
+        // once by ideal / actual area so the line's energy is exact.
+        let len_256 = (((dx * dx + dy * dy) as u64) << 16).isqrt() as i64;
+        let ideal = i64::from(crate::SUB_ONE) * len_256;
+        let actual = 2 * (dx * i64::from(ny) - dy * i64::from(nx)).abs() * 256;
+        // (Aliased lines keep their colour: their energy is a pixel count.)
+        let plane = if style.antialias {
+            plane.scaled(ideal, actual)
+        } else {
+            plane
+        };
         fill(band, &quad, &plane, style);
         Ok(())
     }
@@ -315,7 +345,9 @@ fn fill<const C: usize>(
     }
     let band_end = info.y0 + i32::from(info.rows);
     let rows = (y_min >> SUB_BITS).max(info.y0)..((y_max >> SUB_BITS) + 1).min(band_end);
-    if rows.start >= rows.end || (x_min >> SUB_BITS) >= i32::from(info.width) {
+    // Wholly above, below, right or left of the band: nothing to add (left
+    // of it, the edges' covers would cancel at column 0).
+    if rows.start >= rows.end || (x_min >> SUB_BITS) >= i32::from(info.width) || x_max < 0 {
         return;
     }
     // Inside lies right of edges that run down the screen for a
@@ -334,11 +366,92 @@ fn fill<const C: usize>(
             walk_edge_aliased::<C, _>(p0, p1, orientation, rows.clone(), band);
         }
     }
-    band.sweep(
-        x_min >> SUB_BITS,
-        (x_max >> SUB_BITS) + 1,
-        rows.start,
-        rows.end,
-        plane,
-    );
+    band.sweep(rows.start, rows.end, plane);
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use std::vec;
+
+    use super::*;
+    use crate::band::Band;
+
+    /// Sum of the raw accumulation (lin12 * 4096) over an 80x80 frame.
+    fn energy(draw: impl Fn(&mut BandBuffer<'_, 1>) -> Result<(), DrawError>) -> i64 {
+        let band = Band {
+            width: 80,
+            y0: 0,
+            rows: 80,
+        };
+        let mut acc = vec![0i32; BandBuffer::<1>::acc_len(80, 80)];
+        let mut cover = vec![0i32; BandBuffer::<1>::cover_len(80, 80)];
+        let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
+        buf.clear([0]);
+        draw(&mut buf).unwrap();
+        (0..80)
+            .flat_map(|y| (0..80).map(move |x| (x, y)))
+            .map(|(x, y)| i64::from(buf.raw(x, y).unwrap()[0]))
+            .sum()
+    }
+
+    #[test]
+    fn line_energy_is_length_times_colour_at_every_angle() {
+        for deg in (0..=90).step_by(5) {
+            let a = f64::from(deg).to_radians();
+            let (dx, dy) = (
+                (a.cos() * 40.0 * 16.0) as i32,
+                (a.sin() * 40.0 * 16.0) as i32,
+            );
+            let from = SubPoint::new(20 * 16 + 3, 20 * 16 + 5);
+            let to = SubPoint::new(from.x + dx, from.y + dy);
+            let e =
+                energy(|b| Line::new(from, to, [[4095], [4095]]).draw(b, &RenderStyle::default()));
+            let len = f64::from(dx * dx + dy * dy).sqrt() / 16.0;
+            let ratio = e as f64 / (4095.0 * 4096.0 * len);
+            assert!(
+                (ratio - 1.0).abs() < 0.001,
+                "{deg} degrees: energy ratio {ratio}"
+            );
+        }
+    }
+
+    #[test]
+    fn bow_tie_with_equal_lobes_is_rejected() {
+        let v = [(0, 0), (10, 10), (10, 0), (0, 10)].map(|(x, y)| SubPoint::from_px(x, y));
+        let e = energy(|b| {
+            assert_eq!(
+                Polygon::new(&v, PolygonColors::Flat([4095])).draw(b, &RenderStyle::default()),
+                Err(DrawError::SelfIntersecting)
+            );
+            Ok(())
+        });
+        assert_eq!(e, 0);
+    }
+
+    #[test]
+    fn repeated_and_collinear_vertices_draw_the_plain_shape() {
+        let sq = [(1, 1), (9, 1), (9, 9), (1, 9)].map(|(x, y)| SubPoint::from_px(x, y));
+        let rep = [
+            (1, 1),
+            (1, 1),
+            (5, 1),
+            (9, 1),
+            (9, 9),
+            (9, 9),
+            (1, 9),
+            (1, 1),
+        ]
+        .map(|(x, y)| SubPoint::from_px(x, y));
+        let style = RenderStyle::default();
+        let a = energy(|b| Polygon::new(&sq, PolygonColors::Flat([4095])).draw(b, &style));
+        let r = energy(|b| Polygon::new(&rep, PolygonColors::Flat([4095])).draw(b, &style));
+        assert_eq!(a, r);
+        assert_eq!(a, 64 * 4095 * 4096);
+        let line = [(1, 1), (5, 5), (9, 9), (3, 3)].map(|(x, y)| SubPoint::from_px(x, y));
+        assert_eq!(
+            energy(|b| Polygon::new(&line, PolygonColors::Flat([4095])).draw(b, &style)),
+            0
+        );
+    }
 }

@@ -35,6 +35,17 @@ pub(crate) fn segments_meet(a: SubPoint, b: SubPoint, c: SubPoint, d: SubPoint) 
         || (d4 == 0 && within(a, b, d))
 }
 
+/// True when every vertex lies on one line (zero area, nothing to draw).
+pub(crate) fn collinear(v: &[SubPoint]) -> bool {
+    let Some(&a) = v.first() else {
+        return true;
+    };
+    let Some(&b) = v.iter().find(|&&p| p != a) else {
+        return true;
+    };
+    v.iter().all(|&p| cross(a, b, p) == 0)
+}
+
 /// True when no two non-adjacent edges of the closed polygon meet.
 pub(crate) fn is_simple(v: &[SubPoint]) -> bool {
     let n = v.len();
@@ -114,6 +125,12 @@ mod tests {
 
     fn p(x: i32, y: i32) -> SubPoint {
         SubPoint::new(x, y)
+    }
+
+    #[test]
+    fn collinear_points_are_detected() {
+        assert!(collinear(&[p(0, 0), p(0, 0), p(5, 5), p(10, 10)]));
+        assert!(!collinear(&[p(0, 0), p(5, 5), p(10, 11)]));
     }
 
     #[test]

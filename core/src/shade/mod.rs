@@ -15,12 +15,15 @@
 //! are clamped. The gradients are rounded once, to 1/65536 of a level per
 //! pixel, so the plane at any pixel is an exact integer function of the pixel
 //! address (the same bits whether reached by stepping or evaluated directly:
-//! what makes bands of any height agree). A gradient steeper than one full
-//! scale per pixel (only slivers thinner than a pixel have one) is clamped
-//! to it; such a triangle covers under a pixel across, so the clamp changes
-//! its colour only, never its coverage, and keeps every product in range:
-//! the plane is evaluated only at pixels the primitive touches, within 1.5 px
-//! of it, so `|I| < 4 * 4096` and `|I_fine| < 2^30`.
+//! what makes bands of any height agree).
+//!
+//! A channel whose gradient is steeper than one full scale (4095) per pixel
+//! belongs to a triangle thinner than a pixel across; that channel is shaded
+//! flat with the mean of its three vertex values, which is exactly the
+//! plane's average over the triangle, so the triangle's energy is kept.
+//! Every other plane changes by at most 4095 per pixel and is evaluated only
+//! at the centres of pixels the primitive touches (within `√2/2` px of it),
+//! so `|I| < 2 * 4096` and every product downstream stays far inside `i64`.
 
 use crate::geom::SubPoint;
 
@@ -102,13 +105,19 @@ impl<const C: usize> Plane<C> {
             // dI/dx = a / d and dI/dy = b / d per sub-pixel unit.
             let a = sign * (di1 * dy2 - di2 * dy1);
             let b = sign * (di2 * dx1 - di1 * dx2);
-            let gx = div_round(a * per_px * one, d).clamp(-GRAD_LIMIT, GRAD_LIMIT);
-            let gy = div_round(b * per_px * one, d).clamp(-GRAD_LIMIT, GRAD_LIMIT);
-            let base = (c(0) - i64::from(background[ch].min(LIN_MAX))) * one;
-            let at0 = base + div_round((a * cx + b * cy) * one, d);
+            let bg = i64::from(background[ch].min(LIN_MAX));
+            let gx = div_round(a * per_px * one, d);
+            let gy = div_round(b * per_px * one, d);
+            if gx.abs() > GRAD_LIMIT || gy.abs() > GRAD_LIMIT {
+                // Thinner than a pixel: flat, at the plane's mean.
+                let mean = div_round((c(0) + c(1) + c(2)) * one, 3);
+                plane.at0[ch] = (mean - bg * one) as i32;
+                continue;
+            }
+            let at0 = (c(0) - bg) * one + div_round((a * cx + b * cy) * one, d);
             plane.gx[ch] = gx as i32;
             plane.gy[ch] = gy as i32;
-            plane.at0[ch] = at0.clamp(-(4 * GRAD_LIMIT), 4 * GRAD_LIMIT) as i32;
+            plane.at0[ch] = at0 as i32;
         }
         Some(plane)
     }
@@ -124,6 +133,24 @@ impl<const C: usize> Plane<C> {
                 i64::from(self.at0[ch]) + i64::from(self.gx[ch]) * di + i64::from(self.gy[ch]) * dj;
         }
         out
+    }
+
+    /// The plane times `num / den` (relative to the background; setup use).
+    pub fn scaled(&self, num: i64, den: i64) -> Self {
+        if den <= 0 || num < 0 {
+            return *self;
+        }
+        let f = |v: i32| {
+            div_round(i64::from(v) * num, den).clamp(i64::from(i32::MIN), i64::from(i32::MAX))
+                as i32
+        };
+        Self {
+            i0: self.i0,
+            j0: self.j0,
+            at0: self.at0.map(f),
+            gx: self.gx.map(f),
+            gy: self.gy.map(f),
+        }
     }
 
     /// True when the plane is constant (a flat colour).
@@ -171,13 +198,18 @@ mod tests {
     }
 
     #[test]
-    fn sliver_gradient_is_clamped() {
+    fn sliver_channel_is_flat_at_the_vertex_mean() {
+        // 1/16 px tall: dI/dy would be 16 full scales per pixel.
         let v = [
             SubPoint::new(0, 0),
             SubPoint::new(1000, 0),
             SubPoint::new(0, 1),
         ];
-        let p = Plane::triangle(v, [[0], [0], [4095]], [0]).unwrap();
-        assert_eq!(i64::from(p.gy[0]), GRAD_LIMIT);
+        let p = Plane::triangle(v, [[0, 0], [0, 300], [4095, 0]], [0, 0]).unwrap();
+        assert_eq!((p.gx[0], p.gy[0]), (0, 0));
+        assert_eq!(p.at(3, 0)[0], 1365 << 16);
+        // The second channel varies along x only, gently: kept as a plane.
+        assert_ne!(p.gx[1], 0);
+        assert_eq!(p.gy[1], 0);
     }
 }

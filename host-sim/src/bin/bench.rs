@@ -1,0 +1,272 @@
+//! Instruction counts of the edge engine (a benchmark, not a test).
+//!
+//! `cargo run --release -p softedge-sim --bin bench` runs itself under
+//! valgrind's callgrind three times per channel count, collecting only
+//! inside the edge walk, only inside the span sweep, and over the whole
+//! frame, and prints instructions per edge pixel, per swept pixel and per
+//! frame. Instruction counts are deterministic for a given binary; no time
+//! is measured. `bench run C` renders the reference scene once (what
+//! callgrind measures).
+
+use std::process::Command;
+
+use softedge::edge::{walk_edge, AreaMode, EdgeSink, Plane};
+use softedge::{BandBuffer, Bands, Line, RenderStyle, SubPoint, Triangle};
+
+const W: u16 = 240;
+const H: u16 = 240;
+const BAND_ROWS: u16 = 16;
+const GRID: i32 = 12;
+
+/// The reference scene: a 12x12 grid of jittered quads, each split into two
+/// Gouraud triangles (288 triangles sharing edges), and 16 lines.
+fn scene<const C: usize>() -> (Vec<Triangle<C>>, Vec<Line<C>>) {
+    let cell = i32::from(W) * 16 / GRID;
+    let mut seed = 0x2545_f491_u32;
+    let mut jitter = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        (seed % 97) as i32 - 48
+    };
+    let mut pts = vec![];
+    for j in 0..=GRID {
+        for i in 0..=GRID {
+            let inner = i > 0 && i < GRID && j > 0 && j < GRID;
+            let (jx, jy) = if inner { (jitter(), jitter()) } else { (0, 0) };
+            pts.push(SubPoint::new(i * cell + jx, j * cell + jy));
+        }
+    }
+    let color =
+        |k: usize| -> [u16; C] { core::array::from_fn(|ch| ((k * 37 + ch * 1500) % 4096) as u16) };
+    let idx = |i: i32, j: i32| (j * (GRID + 1) + i) as usize;
+    let mut tris = vec![];
+    for j in 0..GRID {
+        for i in 0..GRID {
+            let (a, b, c, d) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
+            tris.push(Triangle::new(
+                [pts[a], pts[b], pts[c]],
+                [color(a), color(b), color(c)],
+            ));
+            tris.push(Triangle::new(
+                [pts[a], pts[c], pts[d]],
+                [color(a), color(c), color(d)],
+            ));
+        }
+    }
+    let lines = (0..16)
+        .map(|k| {
+            let t = k * 16 * 15;
+            Line::new(
+                SubPoint::new(8 + t / 4, 40),
+                SubPoint::new(3800 - t, 3700),
+                [[4095; C], [500; C]],
+            )
+        })
+        .collect();
+    (tris, lines)
+}
+
+/// A quadrilateral covering the whole frame with its corners at sub-pixel
+/// positions outside it: every pixel is an interior pixel of one span.
+fn fill_scene<const C: usize>() -> (Vec<Triangle<C>>, Vec<Line<C>>) {
+    let (w, h) = (i32::from(W) * 16, i32::from(H) * 16);
+    let v = [
+        SubPoint::new(-5, -3),
+        SubPoint::new(w + 7, -9),
+        SubPoint::new(w + 3, h + 5),
+        SubPoint::new(-9, h + 2),
+    ];
+    let c = |k: u16| [k * 900; C];
+    (
+        vec![
+            Triangle::new([v[0], v[1], v[2]], [c(1), c(2), c(3)]),
+            Triangle::new([v[0], v[2], v[3]], [c(1), c(3), c(4)]),
+        ],
+        vec![],
+    )
+}
+
+/// Renders a scene once, band by band; returns a checksum so nothing is
+/// optimised away.
+#[inline(never)]
+fn render_frame<const C: usize>(fill: bool) -> u64 {
+    let (tris, lines) = if fill {
+        fill_scene::<C>()
+    } else {
+        scene::<C>()
+    };
+    let mut acc = vec![0i32; BandBuffer::<C>::acc_len(W, BAND_ROWS)];
+    let mut cover = vec![0i32; BandBuffer::<C>::cover_len(W, BAND_ROWS)];
+    let style = RenderStyle::default();
+    let mut sum = 0u64;
+    let mut row = vec![[0u16; C]; usize::from(W)];
+    for band in Bands::new(W, H, BAND_ROWS) {
+        let Ok(mut buf) = BandBuffer::<C>::new(&mut acc, &mut cover, band) else {
+            continue;
+        };
+        buf.clear([0; C]);
+        for t in &tris {
+            let _ = t.draw(&mut buf, &style);
+        }
+        for l in &lines {
+            let _ = l.draw(&mut buf, &style);
+        }
+        for y in band.y0..band.y0 + i32::from(band.rows) {
+            buf.resolve_row(y, &mut row);
+            sum += row.iter().flatten().map(|&v| u64::from(v)).sum::<u64>();
+        }
+    }
+    sum
+}
+
+/// Counts the edge pixels the walker reports and the pixels the span sweep
+/// visits for the scene (what the instruction totals are divided by).
+fn counts<const C: usize>() -> (u64, u64) {
+    struct Count(u64);
+    impl<const C: usize> EdgeSink<C> for Count {
+        fn cell(&mut self, _: i32, _: i32, _: i32, _: &[i32; C]) {
+            self.0 += 1;
+        }
+        fn cover(&mut self, _: i32, _: i32, _: i32) {}
+    }
+    let (tris, lines) = scene::<C>();
+    let mut outlines: Vec<Vec<SubPoint>> = tris.iter().map(|t| t.vertices.to_vec()).collect();
+    for l in &lines {
+        // The line's rectangle, as `Line::draw` builds it.
+        let (dx, dy) = (i64::from(l.to.x - l.from.x), i64::from(l.to.y - l.from.y));
+        let len = ((dx * dx + dy * dy) as u64).isqrt() as i64;
+        let nx = (-dy * 16 + len).div_euclid(2 * len) as i32;
+        let ny = (dx * 16 + len).div_euclid(2 * len) as i32;
+        outlines.push(vec![
+            SubPoint::new(l.from.x + nx, l.from.y + ny),
+            SubPoint::new(l.to.x + nx, l.to.y + ny),
+            SubPoint::new(l.to.x - nx, l.to.y - ny),
+            SubPoint::new(l.from.x - nx, l.from.y - ny),
+        ]);
+    }
+    let plane = Plane::<C>::flat([4095; C], [0; C]);
+    let (mut cells, mut swept) = (Count(0), 0u64);
+    for v in &outlines {
+        for band in Bands::new(W, H, BAND_ROWS) {
+            let rows = band.y0..band.y0 + i32::from(band.rows);
+            for k in 0..v.len() {
+                walk_edge(
+                    v[k],
+                    v[(k + 1) % v.len()],
+                    1,
+                    &plane,
+                    AreaMode::Exact,
+                    rows.clone(),
+                    &mut cells,
+                );
+            }
+        }
+        let (x0, x1) = (
+            v.iter().map(|p| p.x).min().unwrap_or(0) >> 4,
+            v.iter().map(|p| p.x).max().unwrap_or(0) >> 4,
+        );
+        let (y0, y1) = (
+            v.iter().map(|p| p.y).min().unwrap_or(0) >> 4,
+            v.iter().map(|p| p.y).max().unwrap_or(0) >> 4,
+        );
+        let cols = (x1 + 1).min(i32::from(W) - 1) - x0.max(0) + 1;
+        let rows = y1.min(i32::from(H) - 1) - y0.max(0) + 1;
+        swept += (cols.max(0) * rows.max(0)) as u64;
+    }
+    (cells.0, swept)
+}
+
+fn callgrind(channels: &str, scene: &str, toggle: Option<&str>) -> Result<u64, String> {
+    let exe = std::env::current_exe().map_err(|e| e.to_string())?;
+    let out = std::env::temp_dir().join(format!(
+        "softedge-bench-{}-{channels}.out",
+        std::process::id()
+    ));
+    let mut cmd = Command::new("valgrind");
+    cmd.arg("--tool=callgrind")
+        .arg(format!("--callgrind-out-file={}", out.display()));
+    if let Some(t) = toggle {
+        cmd.arg(format!("--toggle-collect={t}"));
+    }
+    let status = cmd
+        .arg(&exe)
+        .args(["run", channels, scene])
+        .output()
+        .map_err(|e| {
+            format!("cannot run valgrind ({e}); install it with `apt-get install valgrind`")
+        })?;
+    if !status.status.success() {
+        return Err(String::from_utf8_lossy(&status.stderr).into_owned());
+    }
+    let text = std::fs::read_to_string(&out).map_err(|e| e.to_string())?;
+    let _ = std::fs::remove_file(&out);
+    text.lines()
+        .find_map(|l| {
+            l.strip_prefix("summary:")
+                .or_else(|| l.strip_prefix("totals:"))
+        })
+        .and_then(|v| v.split_whitespace().next()?.parse().ok())
+        .ok_or_else(|| "no totals in callgrind output".into())
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.first().map(String::as_str) == Some("run") {
+        let fill = args.get(2).map(String::as_str) == Some("fill");
+        let sum = match args.get(1).map(String::as_str) {
+            Some("3") => render_frame::<3>(fill),
+            _ => render_frame::<1>(fill),
+        };
+        println!("checksum {sum}");
+        return;
+    }
+    println!("softedge edge-engine instruction counts (valgrind callgrind; deterministic)");
+    println!("scene: {W}x{H}, 288 Gouraud triangles sharing edges + 16 lines, bands of {BAND_ROWS} rows, exact box coverage");
+    println!(
+        "interior: the same frame filled by one Gouraud quadrilateral (two triangles), {} pixels",
+        u32::from(W) * u32::from(H)
+    );
+    for channels in ["1", "3"] {
+        let (cells, _) = if channels == "3" {
+            counts::<3>()
+        } else {
+            counts::<1>()
+        };
+        let run = |scene, t| callgrind(channels, scene, t);
+        let results = [
+            run("mesh", Some("*walk_edge*")),
+            run("mesh", Some("*render_frame*")),
+            run("fill", Some("*sweep*")),
+            run("fill", Some("*render_frame*")),
+        ];
+        let mut n = [0u64; 4];
+        for (slot, r) in n.iter_mut().zip(results) {
+            match r {
+                Ok(v) => *slot = v,
+                Err(e) => {
+                    eprintln!("bench: {e}");
+                    std::process::exit(1);
+                }
+            }
+        }
+        let px = f64::from(W) * f64::from(H);
+        println!("channels {channels}:");
+        println!(
+            "  mesh edge walk  {:>10} instructions / {cells} edge pixels = {:.1} per edge pixel",
+            n[0],
+            n[0] as f64 / cells as f64
+        );
+        println!(
+            "  mesh frame      {:>10} instructions = {:.1} per frame pixel",
+            n[1],
+            n[1] as f64 / px
+        );
+        println!(
+            "  fill span sweep {:>10} instructions = {:.1} per interior pixel",
+            n[2],
+            n[2] as f64 / px
+        );
+        println!("  fill frame      {:>10} instructions = {:.1} per frame pixel (incl. clear and resolve)", n[3], n[3] as f64 / px);
+    }
+}

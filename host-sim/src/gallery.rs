@@ -1,0 +1,682 @@
+//! The demo gallery: PNG images a person can look at to judge softedge.
+//!
+//! | file | panels, left to right |
+//! | --- | --- |
+//! | `01-edges_aliased-vs-aa-exact-vs-aa-seed.png` | one scene (star polygon, 45° and near-horizontal edges, slivers, lines at 32 angles) drawn aliased, anti-aliased with exact box coverage, anti-aliased with the seed-001 single formula |
+//! | `02-edges-detail_aliased-vs-aa-exact-vs-aa-seed-vs-diff.png` | a 32x24 crop of the same three around the 45° edge, magnified more, and the difference between the two anti-aliased modes times 8 |
+//! | `03-gouraud-gray.png` | gray Gouraud triangles, a linear ramp and a fan |
+//! | `04-gouraud-rgb_wheel-vs-triangle.png` | an RGB colour wheel (a fan of 36 triangles), an RGB triangle |
+//! | `05-seams_triangles-vs-mesh-vs-polygon-vs-diff.png` | top row: a jittered mesh of 108 triangles each in its own colour (to show them), the same triangles in one flat colour, the outline as one polygon, the difference of the last two (any difference white); bottom row: the same for a fan of 64 triangles and a 64-gon |
+//!
+//! Every panel is rendered band by band ([`render`]), converted to sRGB by
+//! [`lin12_to_srgb8`](crate::image::lin12_to_srgb8), magnified by an integer
+//! factor and labelled with the built-in 3x5 font.
+
+use std::f64::consts::PI;
+use std::fmt;
+use std::io;
+use std::path::{Path, PathBuf};
+
+use softedge::{Line, RenderStyle, SubPoint, Triangle, LIN_MAX, SUB_ONE};
+
+use crate::font::{draw_text, text_width, GLYPH_H};
+use crate::image::{Channels, Image8, LinImage};
+use crate::png_out::write_png;
+use crate::scene::{render, PolyColors, Primitive, RenderError, Scene};
+
+/// Options of [`write_gallery`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct GalleryOptions {
+    /// Magnification of the panels (nearest neighbour); the detail image
+    /// uses three times this.
+    pub scale: u32,
+    /// Rows per band used for every render.
+    pub band_rows: u16,
+}
+
+impl Default for GalleryOptions {
+    fn default() -> Self {
+        Self {
+            scale: 4,
+            band_rows: 8,
+        }
+    }
+}
+
+/// A file the gallery wrote.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Written {
+    /// Where.
+    pub path: PathBuf,
+    /// Image width in pixels.
+    pub width: u32,
+    /// Image height in pixels.
+    pub height: u32,
+}
+
+/// Why the gallery stopped.
+#[derive(Debug)]
+pub enum GalleryError {
+    /// A directory or file could not be made or written.
+    Io {
+        /// The path involved.
+        path: PathBuf,
+        /// The cause.
+        source: io::Error,
+    },
+    /// A scene was rejected by the rasterizer (a bug in the gallery or in
+    /// core: the gallery's scenes are all valid).
+    Render {
+        /// The image being made.
+        image: &'static str,
+        /// The cause.
+        source: RenderError,
+    },
+}
+
+impl fmt::Display for GalleryError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Io { path, source } => write!(f, "{}: {source}", path.display()),
+            Self::Render { image, source } => write!(f, "rendering {image}: {source}"),
+        }
+    }
+}
+
+impl std::error::Error for GalleryError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Self::Io { source, .. } => Some(source),
+            Self::Render { source, .. } => Some(source),
+        }
+    }
+}
+
+/// Number of files [`write_gallery`] writes.
+pub const GALLERY_FILES: usize = 5;
+
+/// Renders the gallery into `dir` (created if missing). `log` receives one
+/// progress line per image and one `wrote PATH (WxH)` line per file.
+pub fn write_gallery(
+    dir: &Path,
+    opts: &GalleryOptions,
+    log: &mut dyn FnMut(&str),
+) -> Result<Vec<Written>, GalleryError> {
+    std::fs::create_dir_all(dir).map_err(|source| GalleryError::Io {
+        path: dir.to_path_buf(),
+        source,
+    })?;
+    let scale = opts.scale.max(1);
+    let mut written = Vec::new();
+    let mut save = |name: &str, img: &Image8, log: &mut dyn FnMut(&str)| {
+        let path = dir.join(name);
+        write_png(&path, img).map_err(|source| GalleryError::Io {
+            path: path.clone(),
+            source,
+        })?;
+        log(&format!(
+            "wrote {} ({}x{})",
+            path.display(),
+            img.width(),
+            img.height()
+        ));
+        written.push(Written {
+            path,
+            width: img.width(),
+            height: img.height(),
+        });
+        Ok::<(), GalleryError>(())
+    };
+    let n = GALLERY_FILES;
+
+    // (a) Anti-aliasing modes on one scene.
+    log(&format!(
+        "[1/{n}] edges: aliased | AA exact box | AA seed box"
+    ));
+    let edges = edges_scene().with_band_rows(opts.band_rows);
+    let modes = [
+        ("ALIASED", RenderStyle::ALIASED),
+        ("AA EXACT BOX", RenderStyle::default()),
+        (
+            "AA SEED BOX",
+            RenderStyle {
+                antialias: true,
+                model: softedge::PixelModel::BoxSeed,
+            },
+        ),
+    ];
+    let mut renders = Vec::new();
+    for (label, style) in modes {
+        let img = render(&edges.with_style(style)).map_err(|source| GalleryError::Render {
+            image: "edges",
+            source,
+        })?;
+        renders.push((label, img));
+    }
+    let panels: Vec<Panel> = renders
+        .iter()
+        .map(|(label, img)| Panel::new(label, img.to_srgb8(), scale))
+        .collect();
+    let sheet = compose(
+        "EDGES: ALIASED / AA EXACT BOX / AA SEED-001 FORMULA",
+        &[panels],
+    );
+    save("01-edges_aliased-vs-aa-exact-vs-aa-seed.png", &sheet, log)?;
+
+    log(&format!("[2/{n}] edge detail, magnified"));
+    let (cx, cy, cw, ch) = DETAIL;
+    let crops: Vec<LinImage<3>> = renders
+        .iter()
+        .map(|(_, img)| img.crop(cx, cy, cw, ch))
+        .collect();
+    let mut panels: Vec<Panel> = renders
+        .iter()
+        .zip(&crops)
+        .map(|((label, _), crop)| Panel::new(label, crop.to_srgb8(), scale * 3))
+        .collect();
+    if let Some((diff, _)) = crops[1].abs_diff(&crops[2], DETAIL_DIFF_GAIN) {
+        panels.push(Panel::new(
+            &format!("|EXACT-SEED| X{DETAIL_DIFF_GAIN}"),
+            diff.to_srgb8(),
+            scale * 3,
+        ));
+    }
+    let sheet = compose(
+        &format!("DETAIL {cw}X{ch} PX AT ({cx},{cy}): 45 DEG EDGE (SEED WORST CASE)"),
+        &[panels],
+    );
+    save(
+        "02-edges-detail_aliased-vs-aa-exact-vs-aa-seed-vs-diff.png",
+        &sheet,
+        log,
+    )?;
+
+    // (b) Gouraud shading.
+    log(&format!("[3/{n}] gouraud gray"));
+    let gray = render(&gouraud_gray_scene().with_band_rows(opts.band_rows)).map_err(|source| {
+        GalleryError::Render {
+            image: "gouraud gray",
+            source,
+        }
+    })?;
+    let sheet = compose(
+        "GOURAUD GRAY (LINEAR LIGHT, SHOWN AS SRGB)",
+        &[vec![Panel::new("AA EXACT BOX", gray.to_srgb8(), scale)]],
+    );
+    save("03-gouraud-gray.png", &sheet, log)?;
+
+    log(&format!("[4/{n}] gouraud RGB: wheel | triangle"));
+    let mut panels = Vec::new();
+    for (label, scene) in [
+        ("WHEEL: FAN OF 36", rgb_wheel_scene()),
+        ("RGB TRIANGLE", rgb_triangle_scene()),
+    ] {
+        let img = render(&scene.with_band_rows(opts.band_rows)).map_err(|source| {
+            GalleryError::Render {
+                image: "gouraud rgb",
+                source,
+            }
+        })?;
+        panels.push(Panel::new(label, img.to_srgb8(), scale));
+    }
+    let sheet = compose("GOURAUD RGB", &[panels]);
+    save("04-gouraud-rgb_wheel-vs-triangle.png", &sheet, log)?;
+
+    // (c) Seams.
+    log(&format!("[5/{n}] seams: mesh | one polygon | difference"));
+    let mut rows = Vec::new();
+    for (what, (tiles, outline)) in [("MESH", mesh_scenes()), ("FAN OF 64", fan_scenes())] {
+        let err = |source| GalleryError::Render {
+            image: "seams",
+            source,
+        };
+        let shown = render(&patchwork(&tiles).with_band_rows(opts.band_rows)).map_err(err)?;
+        let tiles_img = render(&tiles.with_band_rows(opts.band_rows)).map_err(err)?;
+        let outline_img = render(&outline.with_band_rows(opts.band_rows)).map_err(err)?;
+        let (diff, differ) = diff_panel(&tiles_img, &outline_img);
+        // The aliased walk must tile as well (top-left rule).
+        let aliased = |s: &Scene<3>| render(&s.with_style(RenderStyle::ALIASED)).map_err(err);
+        let (_, differ_aliased) = diff_panel(&aliased(&tiles)?, &aliased(&outline)?);
+        log(&format!(
+            "      {} vs one polygon: {differ} of {} pixels differ anti-aliased, {differ_aliased} aliased",
+            what.to_lowercase(),
+            tiles_img.width() * tiles_img.height()
+        ));
+        rows.push(vec![
+            Panel::new(
+                &format!("{what}: {} TRIANGLES", tiles.primitives.len()),
+                shown.to_srgb8(),
+                scale,
+            ),
+            Panel::new("ONE COLOUR", tiles_img.to_srgb8(), scale),
+            Panel::new("ONE POLYGON", outline_img.to_srgb8(), scale),
+            Panel::new(&format!("DIFF: {differ} PX"), diff.to_srgb8(), scale),
+        ]);
+    }
+    let sheet = compose("SEAMS: TILES VS ONE POLYGON, FLAT COLOUR", &rows);
+    save(
+        "05-seams_triangles-vs-mesh-vs-polygon-vs-diff.png",
+        &sheet,
+        log,
+    )?;
+
+    Ok(written)
+}
+
+/// The crop of the edge scene shown magnified: `(x, y, w, h)`.
+const DETAIL: (u32, u32, u32, u32) = (36, 2, 32, 24);
+
+/// Gain of the detail difference panel: the seed formula's worst error,
+/// 1/8 of full scale at 45°, shows as full white.
+const DETAIL_DIFF_GAIN: u32 = 8;
+
+/// A labelled, magnified panel.
+struct Panel {
+    label: String,
+    image: Image8,
+}
+
+impl Panel {
+    fn new(label: &str, image: Image8, scale: u32) -> Self {
+        Self {
+            label: label.to_string(),
+            image: image.to_rgb().upscale(scale),
+        }
+    }
+}
+
+const SHEET_BG: [u8; 3] = [48, 48, 48];
+const TEXT: [u8; 3] = [235, 235, 235];
+const TEXT_SCALE: u32 = 3;
+const MARGIN: u32 = 12;
+
+/// Lays out rows of panels under a title, each panel under its label.
+fn compose(title: &str, rows: &[Vec<Panel>]) -> Image8 {
+    let line = GLYPH_H * TEXT_SCALE;
+    let label_h = line + MARGIN / 2;
+    let row_w =
+        |row: &Vec<Panel>| row.iter().map(|p| p.image.width() + MARGIN).sum::<u32>() + MARGIN;
+    let row_h = |row: &Vec<Panel>| {
+        row.iter().map(|p| p.image.height()).max().unwrap_or(0) + label_h + MARGIN
+    };
+    let width = rows
+        .iter()
+        .map(row_w)
+        .max()
+        .unwrap_or(0)
+        .max(text_width(title, TEXT_SCALE) + 2 * MARGIN);
+    let height = MARGIN + line + MARGIN + rows.iter().map(row_h).sum::<u32>();
+    let mut sheet = Image8::new(width, height, Channels::Rgb, &SHEET_BG);
+    draw_text(
+        &mut sheet,
+        i64::from(MARGIN),
+        i64::from(MARGIN),
+        TEXT_SCALE,
+        title,
+        &TEXT,
+    );
+    let mut y = MARGIN + line + MARGIN;
+    for row in rows {
+        let mut x = MARGIN;
+        for p in row {
+            draw_text(
+                &mut sheet,
+                i64::from(x),
+                i64::from(y),
+                TEXT_SCALE,
+                &p.label,
+                &TEXT,
+            );
+            sheet.blit(&p.image, x, y + label_h);
+            x += p.image.width() + MARGIN;
+        }
+        y += row_h(row);
+    }
+    sheet
+}
+
+/// `|a - b|` with any difference shown at full white, and the count.
+fn diff_panel(a: &LinImage<3>, b: &LinImage<3>) -> (LinImage<3>, usize) {
+    a.abs_diff(b, u32::from(LIN_MAX))
+        .unwrap_or_else(|| (LinImage::new(a.width(), a.height()), 0))
+}
+
+// --- Scene building (host side: floats are fine here, vertices are rounded
+// to 1/16 px once). ---
+
+/// A point in pixels, rounded to the nearest 1/16 px.
+fn sp(x: f64, y: f64) -> SubPoint {
+    let s = f64::from(SUB_ONE);
+    SubPoint::new((x * s).round() as i32, (y * s).round() as i32)
+}
+
+/// A fraction `0..=1` of full linear intensity.
+fn lin(f: f64) -> u16 {
+    (f.clamp(0.0, 1.0) * f64::from(LIN_MAX)).round() as u16
+}
+
+/// The fully saturated colour of hue `h` (turns), as linear 12-bit RGB:
+/// the HSV hue in sRGB, decoded to linear light.
+fn hue_lin(h: f64) -> [u16; 3] {
+    let channel = |offset: f64| {
+        let t = (h + offset).rem_euclid(1.0) * 6.0;
+        let srgb = ((t - 3.0).abs() - 1.0).clamp(0.0, 1.0);
+        let linear = if srgb <= 0.040_45 {
+            srgb / 12.92
+        } else {
+            ((srgb + 0.055) / 1.055).powf(2.4)
+        };
+        lin(linear)
+    };
+    [channel(0.0), channel(2.0 / 3.0), channel(1.0 / 3.0)]
+}
+
+/// The edge scene: 128x80, white on black.
+fn edges_scene() -> Scene<3> {
+    let white = [LIN_MAX; 3];
+    let mut s = Scene::new(128, 80, [0; 3]);
+    // A five-pointed star as a simple concave 10-gon, tip up.
+    let (cx, cy, r_out, r_in) = (20.3, 22.1, 17.0, 7.0);
+    let star: Vec<SubPoint> = (0..10)
+        .map(|k| {
+            let a = -PI / 2.0 + f64::from(k) * PI / 5.0;
+            let r = if k % 2 == 0 { r_out } else { r_in };
+            sp(cx + r * a.cos(), cy + r * a.sin())
+        })
+        .collect();
+    s.primitives.push(Primitive::flat_polygon(star, white));
+    // Right triangle with a 45° hypotenuse, off the pixel grid.
+    s.primitives.push(Primitive::Triangle(Triangle::flat(
+        // Half a pixel between the x and y offsets: the hypotenuse crosses
+        // row boundaries at column centres, the seed formula's worst case.
+        [sp(40.3, 3.8), sp(62.3, 3.8), sp(62.3, 25.8)],
+        white,
+    )));
+    // A wedge whose two edges are near-horizontal (slope ±1/20).
+    s.primitives.push(Primitive::Triangle(Triangle::flat(
+        [sp(2.5, 42.0), sp(62.5, 45.0), sp(2.5, 48.0)],
+        white,
+    )));
+    // Slivers, 1/4 to 2 px thick at their wide end.
+    for (k, t) in [0.25, 0.5, 0.75, 1.0, 1.5, 2.0].into_iter().enumerate() {
+        let y = 53.0 + 4.2 * k as f64;
+        s.primitives.push(Primitive::Triangle(Triangle::flat(
+            [sp(3.0, y + 1.0), sp(62.0, y), sp(62.0, y + t)],
+            white,
+        )));
+    }
+    // Lines at 32 angles, 11.25° apart.
+    let (lx, ly) = (96.2, 40.1);
+    for k in 0..32 {
+        let a = f64::from(k) * PI / 16.0;
+        s.primitives.push(Primitive::Line(Line::new(
+            sp(lx + 6.0 * a.cos(), ly + 6.0 * a.sin()),
+            sp(lx + 29.0 * a.cos(), ly + 29.0 * a.sin()),
+            [white, white],
+        )));
+    }
+    // Very shallow lines (slope 1/30 and 1/60).
+    s.primitives.push(Primitive::Line(Line::new(
+        sp(67.0, 3.0),
+        sp(126.0, 5.0),
+        [white, white],
+    )));
+    s.primitives.push(Primitive::Line(Line::new(
+        sp(67.0, 76.0),
+        sp(126.0, 77.0),
+        [white, white],
+    )));
+    s
+}
+
+/// Gray Gouraud: 128x80.
+fn gouraud_gray_scene() -> Scene<1> {
+    let mut s = Scene::new(128, 80, [lin(0.05)]);
+    s.primitives.push(Primitive::Triangle(Triangle::new(
+        [sp(4.0, 4.0), sp(60.0, 12.0), sp(18.0, 76.0)],
+        [[0], [LIN_MAX], [lin(0.5)]],
+    )));
+    // A horizontal linear ramp, black to white.
+    s.primitives.push(Primitive::Polygon {
+        vertices: vec![
+            sp(66.0, 4.0),
+            sp(124.0, 4.0),
+            sp(124.0, 22.0),
+            sp(66.0, 22.0),
+        ],
+        colors: PolyColors::PerVertex(vec![[0], [LIN_MAX], [LIN_MAX], [0]]),
+    });
+    // A fan of 12 around a white centre, rim alternating black and dark gray.
+    let (cx, cy, r) = (95.0, 52.0, 24.0);
+    for k in 0..12 {
+        let a0 = f64::from(k) * PI / 6.0;
+        let a1 = f64::from(k + 1) * PI / 6.0;
+        let rim = |k: i32| if k % 2 == 0 { [0] } else { [lin(0.25)] };
+        s.primitives.push(Primitive::Triangle(Triangle::new(
+            [
+                sp(cx, cy),
+                sp(cx + r * a0.cos(), cy + r * a0.sin()),
+                sp(cx + r * a1.cos(), cy + r * a1.sin()),
+            ],
+            [[LIN_MAX], rim(k), rim(k + 1)],
+        )));
+    }
+    s
+}
+
+/// RGB colour wheel: a fan of 36 triangles, white centre, hues on the rim.
+fn rgb_wheel_scene() -> Scene<3> {
+    let mut s = Scene::new(96, 96, [lin(0.02); 3]);
+    let (cx, cy, r) = (48.0, 48.0, 44.0);
+    let n = 36;
+    for k in 0..n {
+        let h0 = f64::from(k) / f64::from(n);
+        let h1 = f64::from(k + 1) / f64::from(n);
+        let (a0, a1) = (h0 * 2.0 * PI, h1 * 2.0 * PI);
+        s.primitives.push(Primitive::Triangle(Triangle::new(
+            [
+                sp(cx, cy),
+                sp(cx + r * a0.cos(), cy - r * a0.sin()),
+                sp(cx + r * a1.cos(), cy - r * a1.sin()),
+            ],
+            [[LIN_MAX; 3], hue_lin(h0), hue_lin(h1)],
+        )));
+    }
+    s
+}
+
+/// The classic red-green-blue triangle.
+fn rgb_triangle_scene() -> Scene<3> {
+    let mut s = Scene::new(96, 96, [lin(0.02); 3]);
+    s.primitives.push(Primitive::Triangle(Triangle::new(
+        [sp(48.0, 4.0), sp(92.0, 88.0), sp(4.0, 88.0)],
+        [[LIN_MAX, 0, 0], [0, LIN_MAX, 0], [0, 0, LIN_MAX]],
+    )));
+    s
+}
+
+const MESH_BG: [u16; 3] = [120, 220, 560];
+const MESH_FG: [u16; 3] = [4095, 1400, 160];
+
+/// The same scene with each primitive in its own colour (hues a golden
+/// ratio apart, at 3/4 intensity), to show the tiling.
+fn patchwork(s: &Scene<3>) -> Scene<3> {
+    let mut out = s.clone();
+    for (k, p) in out.primitives.iter_mut().enumerate() {
+        let hue = (k as f64 * 0.618_034).fract();
+        let c = hue_lin(hue).map(|v| v - v / 4);
+        if let Primitive::Triangle(t) = p {
+            t.colors = [c; 3];
+        }
+    }
+    out
+}
+
+/// A deterministic generator for jitter (xorshift32).
+struct Jitter(u32);
+
+impl Jitter {
+    /// A value in `[-1, 1)`.
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 17;
+        self.0 ^= self.0 << 5;
+        f64::from(self.0) / f64::from(u32::MAX) * 2.0 - 1.0
+    }
+}
+
+/// A 9x6-cell mesh of 108 flat triangles with jittered vertices, and the
+/// same outline drawn as one polygon.
+fn mesh_scenes() -> (Scene<3>, Scene<3>) {
+    let (nx, ny) = (9usize, 6usize);
+    let (x0, y0, x1, y1) = (6.3, 5.2, 105.7, 74.6);
+    let (cw, ch) = ((x1 - x0) / nx as f64, (y1 - y0) / ny as f64);
+    let mut rng = Jitter(0x5EED_ED6E);
+    let mut grid = vec![vec![SubPoint::default(); nx + 1]; ny + 1];
+    for (j, row) in grid.iter_mut().enumerate() {
+        for (i, p) in row.iter_mut().enumerate() {
+            let (jx, jy) = (rng.next() * 0.35 * cw, rng.next() * 0.35 * ch);
+            // Boundary points move only along the boundary; corners stay.
+            let jx = if i == 0 || i == nx { 0.0 } else { jx };
+            let jy = if j == 0 || j == ny { 0.0 } else { jy };
+            *p = sp(x0 + i as f64 * cw + jx, y0 + j as f64 * ch + jy);
+        }
+    }
+    let mut tiles = Scene::new(112, 80, MESH_BG);
+    for j in 0..ny {
+        for i in 0..nx {
+            let (a, b) = (grid[j][i], grid[j][i + 1]);
+            let (c, d) = (grid[j + 1][i + 1], grid[j + 1][i]);
+            let tris = if (i + j) % 2 == 0 {
+                [[a, b, c], [a, c, d]]
+            } else {
+                [[a, b, d], [b, c, d]]
+            };
+            for t in tris {
+                tiles
+                    .primitives
+                    .push(Primitive::Triangle(Triangle::flat(t, MESH_FG)));
+            }
+        }
+    }
+    let mut outline = Vec::new();
+    outline.extend((0..nx).map(|i| grid[0][i]));
+    outline.extend((0..ny).map(|j| grid[j][nx]));
+    outline.extend((1..=nx).rev().map(|i| grid[ny][i]));
+    outline.extend((1..=ny).rev().map(|j| grid[j][0]));
+    let mut one = Scene::new(112, 80, MESH_BG);
+    one.primitives
+        .push(Primitive::flat_polygon(outline, MESH_FG));
+    (tiles, one)
+}
+
+/// A fan of 64 triangles around an off-grid centre, and the 64-gon.
+fn fan_scenes() -> (Scene<3>, Scene<3>) {
+    let (cx, cy, r) = (55.6, 40.3, 36.0);
+    let rim: Vec<SubPoint> = (0..64)
+        .map(|k| {
+            let a = f64::from(k) * PI / 32.0;
+            sp(cx + r * a.cos(), cy + r * a.sin())
+        })
+        .collect();
+    let mut tiles = Scene::new(112, 80, MESH_BG);
+    for k in 0..rim.len() {
+        tiles.primitives.push(Primitive::Triangle(Triangle::flat(
+            [sp(cx, cy), rim[k], rim[(k + 1) % rim.len()]],
+            MESH_FG,
+        )));
+    }
+    let mut one = Scene::new(112, 80, MESH_BG);
+    one.primitives.push(Primitive::flat_polygon(rim, MESH_FG));
+    (tiles, one)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn temp_dir(tag: &str) -> PathBuf {
+        let d =
+            std::env::temp_dir().join(format!("softedge-sim-gallery-{tag}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        d
+    }
+
+    fn decode(path: &Path) -> (u32, u32, Vec<u8>) {
+        let file = std::fs::File::open(path).unwrap();
+        let mut reader = png::Decoder::new(std::io::BufReader::new(file))
+            .read_info()
+            .unwrap();
+        let mut buf = vec![0; reader.output_buffer_size()];
+        let info = reader.next_frame(&mut buf).unwrap();
+        buf.truncate(info.buffer_size());
+        (info.width, info.height, buf)
+    }
+
+    #[test]
+    fn gallery_writes_non_uniform_pngs() {
+        let dir = temp_dir("ok");
+        let mut lines = Vec::new();
+        let opts = GalleryOptions {
+            scale: 2,
+            band_rows: 8,
+        };
+        let written = write_gallery(&dir, &opts, &mut |l| lines.push(l.to_string())).unwrap();
+        assert_eq!(written.len(), GALLERY_FILES);
+        for w in &written {
+            let meta = std::fs::metadata(&w.path).unwrap();
+            assert!(meta.len() > 0, "{} is empty", w.path.display());
+            let (width, height, pixels) = decode(&w.path);
+            assert_eq!((width, height), (w.width, w.height));
+            let first = &pixels[..3];
+            assert!(
+                pixels.chunks_exact(3).any(|p| p != first),
+                "{} is uniform",
+                w.path.display()
+            );
+            assert!(lines
+                .iter()
+                .any(|l| l.starts_with("wrote ") && l.contains(&*w.path.to_string_lossy())));
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn unwritable_dir_is_an_error() {
+        let file = temp_dir("file");
+        std::fs::write(&file, b"not a dir").unwrap();
+        let err = write_gallery(&file.join("sub"), &GalleryOptions::default(), &mut |_| {});
+        std::fs::remove_file(&file).unwrap();
+        assert!(matches!(err, Err(GalleryError::Io { .. })));
+    }
+
+    #[test]
+    fn every_gallery_scene_renders() {
+        for s in [edges_scene(), rgb_wheel_scene(), rgb_triangle_scene()] {
+            let img = render(&s).unwrap();
+            assert!(img.sum() > 0);
+        }
+        assert!(render(&gouraud_gray_scene()).unwrap().sum() > 0);
+    }
+
+    #[test]
+    fn aa_modes_differ_and_keep_the_energy() {
+        let s = edges_scene();
+        let aliased = render(&s.with_style(RenderStyle::ALIASED)).unwrap();
+        let exact = render(&s).unwrap();
+        assert_ne!(aliased, exact);
+        // The same shapes: summed linear intensity within 2 % (aliased
+        // lines cover their rectangles with corners rounded to 1/16 px,
+        // whose width is off by up to 7 % at some angles; anti-aliased lines
+        // are scaled back to their ideal energy).
+        let (a, e) = (aliased.sum() as f64, exact.sum() as f64);
+        assert!((a - e).abs() / e < 0.02, "aliased {a} vs exact {e}");
+    }
+
+    #[test]
+    fn hues_are_saturated() {
+        assert_eq!(hue_lin(0.0), [LIN_MAX, 0, 0]);
+        assert_eq!(hue_lin(1.0 / 3.0), [0, LIN_MAX, 0]);
+        assert_eq!(hue_lin(2.0 / 3.0), [0, 0, LIN_MAX]);
+    }
+}

@@ -1,0 +1,49 @@
+//! # softedge-sim
+//!
+//! The host side of softedge: everything that needs `std` (files, PNG, the
+//! command line) and none of it in the firmware.
+//!
+//! - [`scene`]: a frame described as data (primitives with per-vertex
+//!   colours, frame size, band height, style, background) and
+//!   [`render`](scene::render), which draws it band by band exactly as
+//!   firmware does: one [`BandBuffer`](softedge::BandBuffer) of `band_rows`
+//!   rows, cleared, every primitive drawn into it, rows resolved, next band.
+//!   The result is a [`LinImage`](image::LinImage) of linear 12-bit values,
+//!   the bits a display driver would receive before its tone stage.
+//! - [`image`]: linear and 8-bit images, the linear-to-sRGB conversion for
+//!   viewing on a PC, nearest-neighbour upscaling and simple compositing.
+//! - [`font`]: a 3x5 bitmap font for panel labels.
+//! - [`png_out`]: PNG encoding with the `png` crate.
+//! - [`gallery`]: the demo images of `softedge-sim gallery`.
+//!
+//! ```
+//! use softedge::{Line, RenderStyle, SubPoint};
+//! use softedge_sim::scene::{render, Primitive, Scene};
+//!
+//! let scene = Scene::<1> {
+//!     width: 16,
+//!     height: 8,
+//!     band_rows: 8,
+//!     style: RenderStyle::default(),
+//!     background: [0],
+//!     primitives: vec![Primitive::Line(Line::new(
+//!         SubPoint::from_px(1, 4),
+//!         SubPoint::from_px(15, 4),
+//!         [[4094], [4094]],
+//!     ))],
+//! };
+//! let img = render(&scene).unwrap();
+//! assert_eq!(img.get(8, 3), &[2047]); // half of the 1-px line in each row
+//! assert_eq!(img.get(8, 4), &[2047]);
+//! ```
+
+pub mod font;
+pub mod gallery;
+pub mod image;
+pub mod png_out;
+pub mod scene;
+
+/// The repository README's code blocks, compiled and run as doc tests.
+#[cfg(doctest)]
+#[doc = include_str!("../../README.md")]
+pub struct ReadmeDoctests;

@@ -1,0 +1,47 @@
+//! The `softedge-sim` binary: help, exit codes, and errors without panics.
+
+use std::process::{Command, Output};
+
+fn sim(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_softedge-sim"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+#[test]
+fn help_lists_the_subcommands() {
+    for flag in ["--help", "-h", "help"] {
+        let out = sim(&[flag]);
+        assert!(out.status.success());
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(text.contains("gallery -o DIR"), "{text}");
+        assert!(text.contains("help"), "{text}");
+    }
+}
+
+#[test]
+fn bad_command_lines_exit_2_with_usage() {
+    for args in [&[][..], &["frobnicate"], &["gallery"], &["gallery", "-o"]] {
+        let out = sim(args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains("USAGE"), "{err}");
+        assert!(!err.contains("panicked"), "{err}");
+    }
+    let out = sim(&["gallery", "-o", "x", "--scale", "0"]);
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn unwritable_dir_is_a_message_and_exit_1() {
+    let file = std::env::temp_dir().join(format!("softedge-sim-cli-{}", std::process::id()));
+    std::fs::write(&file, b"a file, not a directory").unwrap();
+    let target = file.join("gallery");
+    let out = sim(&["gallery", "-o", target.to_str().unwrap()]);
+    std::fs::remove_file(&file).unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("error"), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+}
