@@ -178,7 +178,7 @@ fn exact_edge_area_within_1_256() {
     let max = StdCell::new(0.0f64);
     let mut runner = TestRunner::new(Config {
         failure_persistence: None,
-        ..Config::with_cases(384)
+        ..Config::with_cases(256)
     });
     runner
         .run(&edge_case(), |c| {
@@ -220,7 +220,7 @@ fn seed_formula_edge_area_within_k_over_8() {
     let max_ratio = StdCell::new(0.0f64);
     let mut runner = TestRunner::new(Config {
         failure_persistence: None,
-        ..Config::with_cases(384)
+        ..Config::with_cases(256)
     });
     runner
         .run(&edge_case(), |c| {
