@@ -1,1 +1,17 @@
+//! Independent reference for `softedge`'s tests.
+//!
+//! - [`exact`]: exact areas (Sutherland–Hodgman clipping in rational
+//!   arithmetic), the exact Gouraud plane and the aliased top-left rule,
+//!   written from the definitions.
+//! - [`ratio`]: the exact rational they use (checked `i128`).
+//! - [`frame`]: drawing a whole frame through bands and reading it back;
+//!   an [`EdgeSink`](softedge::edge::EdgeSink) that records what an edge walk
+//!   reports.
+//! - [`shapes`]: test shapes made from random numbers: star-shaped simple
+//!   polygons and triangulations of a square.
 #![forbid(unsafe_code)]
+
+pub mod exact;
+pub mod frame;
+pub mod ratio;
+pub mod shapes;
