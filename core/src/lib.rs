@@ -54,6 +54,7 @@
 // Per-channel loops index several arrays of the same length at once.
 #![allow(clippy::needless_range_loop)]
 
+mod arith;
 pub mod band;
 pub mod edge;
 #[cfg(feature = "embedded-graphics")]
@@ -74,8 +75,8 @@ pub use shade::LIN_MAX;
 
 /// Coverage of one whole pixel in the units every stage uses: `4096 = 2^12`.
 ///
-/// Edge-pixel areas are exact floors in these units (error below 1/4096 of a
-/// pixel, far inside the 1/256 the box model promises); a pixel value in the
+/// Edge-pixel areas are floors in these units (error below 3/4096 px per
+/// edge, far inside the 1/256 the box model promises); a pixel value in the
 /// accumulation buffer is `lin12 * coverage`, so a fully covered pixel of
 /// intensity 4095 holds `4095 * 4096 < 2^24`.
 pub const COVER_ONE: i32 = 1 << COVER_BITS;

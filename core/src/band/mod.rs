@@ -181,7 +181,10 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         let bg = background.map(|v| v.min(LIN_MAX));
         self.background = bg;
         let n = Self::acc_len(self.band.width, self.band.rows);
-        for px in self.acc[..n].chunks_exact_mut(C) {
+        let Some(acc) = self.acc.get_mut(..n) else {
+            return;
+        };
+        for px in acc.chunks_exact_mut(C) {
             for (a, b) in px.iter_mut().zip(bg) {
                 *a = i32::from(b) << COVER_BITS;
             }
@@ -209,7 +212,9 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
             return 0;
         };
         let w = usize::from(self.band.width);
-        let row = &self.acc[start..start + w * C];
+        let Some(row) = self.acc.get(start..start + w * C) else {
+            return 0;
+        };
         let mut n = 0;
         for (o, px) in out.iter_mut().zip(row.chunks_exact(C)) {
             for (oc, &a) in o.iter_mut().zip(px) {

@@ -44,11 +44,13 @@ impl<const C: usize> BandBuffer<'_, C> {
             let mut c: i64 = 0;
             let mut x = lo;
             loop {
-                c += i64::from(core::mem::take(&mut deltas[x]));
+                c += deltas
+                    .get_mut(x)
+                    .map_or(0, |d| i64::from(core::mem::take(d)));
                 // The span runs to the next cover change, or to the band's
                 // end if cover remains after the last one.
                 let mut next = x + 1;
-                while next <= hi && deltas[next] == 0 {
+                while next <= hi && deltas.get(next) == Some(&0) {
                     next += 1;
                 }
                 let end = if next > hi && c != 0 { w } else { next };
@@ -61,7 +63,8 @@ impl<const C: usize> BandBuffer<'_, C> {
                         v[ch] = i0[ch] * c;
                         dv[ch] = gx[ch] * c;
                     }
-                    for px in row_acc[x * C..end * C].chunks_exact_mut(C) {
+                    let span = row_acc.get_mut(x * C..end * C).unwrap_or_default();
+                    for px in span.chunks_exact_mut(C) {
                         for ch in 0..C {
                             px[ch] = px[ch].saturating_add((v[ch] >> PLANE_FRAC) as i32);
                             v[ch] += dv[ch];

@@ -11,6 +11,7 @@
 use core::ops::Range;
 
 use super::EdgeSink;
+use crate::arith::{div_floor, rem_floor};
 use crate::{SubPoint, COVER_ONE, SUB_ONE};
 
 /// Reports the cover changes of the aliased edge `p0 -> p1` in `rows`.
@@ -39,8 +40,8 @@ pub fn walk_edge_aliased<const C: usize, K: EdgeSink<C>>(
     );
     let (dx, dy) = (x1 - x0, y1 - y0);
     // Rows whose centre 16 j + 8 lies in [y0, y1).
-    let first = (y0 - sub / 2 + sub - 1).div_euclid(sub);
-    let last = (y1 - sub / 2 + sub - 1).div_euclid(sub) - 1;
+    let first = div_floor(y0 - sub / 2 + sub - 1, sub);
+    let last = div_floor(y1 - sub / 2 + sub - 1, sub) - 1;
     let first = first.max(i64::from(rows.start));
     let last = last.min(i64::from(rows.end) - 1);
     if first > last {
@@ -51,9 +52,9 @@ pub fn walk_edge_aliased<const C: usize, K: EdgeSink<C>>(
     let d = sub * dy;
     let yc = first * sub + sub / 2;
     let m = -(x0 * dy + (yc - y0) * dx - sub / 2 * dy);
-    let (mut fq, mut fr) = (m.div_euclid(d), m.rem_euclid(d));
+    let (mut fq, mut fr) = (div_floor(m, d), rem_floor(m, d));
     let step = -sub * dx;
-    let (sq, sr) = (step.div_euclid(d), step.rem_euclid(d));
+    let (sq, sr) = (div_floor(step, d), rem_floor(step, d));
     for j in first..=last {
         sink.cover(-fq as i32, j as i32, w * COVER_ONE);
         fr += sr;

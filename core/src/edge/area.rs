@@ -2,6 +2,7 @@
 //! edge. Runs a few times per edge (one i64 division; no per-pixel use).
 
 use super::canon::Canon;
+use crate::arith::{div_floor, limit};
 
 /// `floor(16 * ∫_{ulo}^{uhi} clamp(v̄(u) - vlo, 0, vhi - vlo) du)`, where
 /// `v̄` is the edge's line clamped flat beyond its end points, all in
@@ -11,7 +12,7 @@ pub(crate) fn clamped_area(e: &Canon, ulo: i64, uhi: i64, vlo: i64, vhi: i64) ->
     if uhi <= ulo || h <= 0 {
         return 0;
     }
-    let flat = |len: i64, v: i64| len.max(0) * (v - vlo).clamp(0, h);
+    let flat = |len: i64, v: i64| len.max(0) * limit(v - vlo, 0, h);
     // The two flat extensions beyond the end points, in sub-pixels².
     let mut whole = flat(uhi.min(e.u0) - ulo, e.v0) + flat(uhi - ulo.max(e.u1), e.v1);
     let (p, q) = (ulo.max(e.u0), uhi.min(e.u1));
@@ -30,8 +31,8 @@ pub(crate) fn clamped_area(e: &Canon, ulo: i64, uhi: i64, vlo: i64, vhi: i64) ->
             let x_end = (q - p) * dv;
             // Where the line meets vlo (x = -a) and vhi (x = h du - a),
             // clamped into the piece.
-            let xa = (-a).clamp(0, x_end);
-            let xb = (h * du - a).clamp(0, x_end);
+            let xa = limit(-a, 0, x_end);
+            let xb = limit(h * du - a, 0, x_end);
             // ∫ v' over [xa, xb] and the full height right of xb.
             part = (xb - xa) * (2 * a + xa + xb) + (x_end - xb) * h * 2 * du;
         }
@@ -39,7 +40,7 @@ pub(crate) fn clamped_area(e: &Canon, ulo: i64, uhi: i64, vlo: i64, vhi: i64) ->
     // In 1/4096 px: 16 per sub-pixel². `part` is over `den`.
     let scaled = 16 * whole
         + if den > 0 {
-            (16 * part).div_euclid(den)
+            div_floor(16 * part, den)
         } else {
             0
         };

@@ -1,6 +1,7 @@
 //! Setup: the canonical (first-octant) frame of an edge, by the rule of
 //! duality of seed 001. No per-pixel work here.
 
+use crate::arith::{div_floor, limit};
 use crate::geom::SubPoint;
 use crate::SUB_ONE;
 
@@ -102,8 +103,8 @@ impl Canon {
     pub fn columns(&self) -> (i64, i64) {
         let one = i64::from(SUB_ONE);
         (
-            self.u0.div_euclid(one),
-            (self.u1 + one - 1).div_euclid(one) - 1,
+            div_floor(self.u0, one),
+            div_floor(self.u1 + one - 1, one) - 1,
         )
     }
 
@@ -111,15 +112,15 @@ impl Canon {
     pub fn rows(&self) -> (i64, i64) {
         let one = i64::from(SUB_ONE);
         (
-            self.v0.div_euclid(one),
-            (self.v1 + one - 1).div_euclid(one) - 1,
+            div_floor(self.v0, one),
+            div_floor(self.v1 + one - 1, one) - 1,
         )
     }
 
     /// `v * du` at `u`, with `u` clamped into the edge (the line extended
     /// flat beyond its end points).
     pub fn v_num_clamped(&self, u: i64) -> i64 {
-        let u = u.clamp(self.u0, self.u1);
+        let u = limit(u, self.u0, self.u1);
         self.v0 * self.du + (u - self.u0) * self.dv
     }
 }

@@ -6,6 +6,7 @@ use core::ops::Range;
 use super::area::clamped_area;
 use super::canon::Canon;
 use super::{AreaMode, EdgeSink, Plane};
+use crate::arith::{div_ceil, div_floor, limit, rem_floor};
 use crate::shade::PLANE_FRAC;
 use crate::{COVER_BITS, COVER_ONE, SUB_BITS, SUB_ONE};
 
@@ -127,12 +128,12 @@ impl<'a, const C: usize, K: EdgeSink<C>> Walker<'a, C, K> {
         sink: &'a mut K,
     ) -> Self {
         let du = e.du;
-        let q = (ONE * e.dv).div_euclid(du);
-        let rr = (ONE * e.dv).rem_euclid(du);
-        let kq = (ONE / 2 * e.dv).div_euclid(du);
-        let kr = (ONE / 2 * e.dv).rem_euclid(du);
+        let q = div_floor(ONE * e.dv, du);
+        let rr = rem_floor(ONE * e.dv, du);
+        let kq = div_floor(ONE / 2 * e.dv, du);
+        let kr = rem_floor(ONE / 2 * e.dv, du);
         let inv = if e.dv > 0 {
-            ((du as u64) << 19) / e.dv as u64
+            ((du as u64) << 19).checked_div(e.dv as u64).unwrap_or(0)
         } else {
             0
         };
@@ -174,14 +175,11 @@ impl<'a, const C: usize, K: EdgeSink<C>> Walker<'a, C, K> {
     /// Chosen minor cell of column `a`: the cell holding the (clamped) line
     /// at the column centre.
     fn centre_cell(&self, a: i64) -> i64 {
-        let b = self
-            .e
-            .v_num_clamped(a * SUB + SUB / 2)
-            .div_euclid(SUB * self.e.du);
+        let b = div_floor(self.e.v_num_clamped(a * SUB + SUB / 2), SUB * self.e.du);
         if self.e.transposed {
             b
         } else {
-            b.clamp(self.b0, self.b1)
+            limit(b, self.b0, self.b1)
         }
     }
 
@@ -199,14 +197,14 @@ impl<'a, const C: usize, K: EdgeSink<C>> Walker<'a, C, K> {
     fn init(&self, a: i64) -> Step<C> {
         let e = &self.e;
         let vn = e.v0 * e.du + (a * SUB + SUB / 2 - e.u0) * e.dv;
-        let b = vn.div_euclid(SUB * e.du);
+        let b = div_floor(vn, SUB * e.du);
         let (v_ref, h) = if !e.transposed && b == self.b0 {
             (e.v0, COVER_PER_SUB * ((b + 1) * SUB - e.v0))
         } else {
             (b * SUB, ONE)
         };
         let n = COVER_PER_SUB * (vn - v_ref * e.du);
-        let (s, r) = (n.div_euclid(e.du), n.rem_euclid(e.du));
+        let (s, r) = (div_floor(n, e.du), rem_floor(n, e.du));
         let i = self.plane_at(a, b);
         let mut st = Step {
             a,
@@ -383,20 +381,17 @@ impl<'a, const C: usize, K: EdgeSink<C>> Walker<'a, C, K> {
         // First column whose centre lies at or below v_top (divides: setup).
         let reach = |v_top: i64| {
             let e = &self.e;
-            ((v_top - e.v0) * e.du + (e.u0 - SUB / 2) * e.dv).div_euclid(SUB * e.dv)
-                + i64::from(
-                    ((v_top - e.v0) * e.du + (e.u0 - SUB / 2) * e.dv).rem_euclid(SUB * e.dv) != 0,
-                )
+            div_ceil((v_top - e.v0) * e.du + (e.u0 - SUB / 2) * e.dv, SUB * e.dv)
         };
         let a_start = if b0 >= self.ylo - 1 {
             a0
         } else {
-            reach((self.ylo - 1) * SUB).clamp(a0, a1)
+            limit(reach((self.ylo - 1) * SUB), a0, a1)
         };
         let a_stop = if b1 <= self.yhi {
             a1
         } else {
-            (reach((self.yhi + 1) * SUB) - 1).clamp(a0, a1)
+            limit(reach((self.yhi + 1) * SUB) - 1, a0, a1)
         };
         let mut prev = if a_start == a0 {
             b0
@@ -408,12 +403,8 @@ impl<'a, const C: usize, K: EdgeSink<C>> Walker<'a, C, K> {
             let bc = if a == a0 || a == a1 {
                 st = None;
                 let bc = self.centre_cell(a);
-                let row = |u: i64| {
-                    self.e
-                        .v_num_clamped(u)
-                        .div_euclid(SUB * self.e.du)
-                        .clamp(b0, b1)
-                };
+                let row =
+                    |u: i64| limit(div_floor(self.e.v_num_clamped(u), SUB * self.e.du), b0, b1);
                 let rows = (row(a * SUB), row(a * SUB + SUB));
                 self.end_cells(a, a * SUB, a * SUB + SUB, bc, rows, |s, b| s.row_cover(b));
                 bc
@@ -454,7 +445,7 @@ impl<'a, const C: usize, K: EdgeSink<C>> Walker<'a, C, K> {
                 st = None;
                 let (ulo, uhi) = ((a * SUB).max(self.e.u0), (a * SUB + SUB).min(self.e.u1));
                 let bc = self.centre_cell(a);
-                let cell = |u: i64| self.e.v_num_clamped(u).div_euclid(SUB * self.e.du);
+                let cell = |u: i64| div_floor(self.e.v_num_clamped(u), SUB * self.e.du);
                 let rows = (cell(ulo), cell(uhi));
                 self.end_cells(a, ulo, uhi, bc, rows, |s, _| s.column_cover(a));
                 bc

@@ -43,7 +43,8 @@ pub const MAX_POLYGON_VERTICES: usize = 64;
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[non_exhaustive]
 pub enum PixelModel {
-    /// Square pixel, exact area (within 1/4096 px).
+    /// Square pixel, exact area (within 3/4096 px per edge; see
+    /// [`AreaMode::Exact`]).
     #[default]
     Box,
     /// Square pixel, the single formula of seed 001 (error up to `k/8` of a
@@ -226,13 +227,21 @@ impl<'a, const C: usize> Polygon<'a, C> {
             return Err(DrawError::SelfIntersecting);
         }
         let bg = band.background();
-        if cols.iter().all(|c| *c == cols[0]) {
-            fill(band, &pts, &Plane::flat(cols[0], bg), style);
-            return Ok(());
+        if let Some(&first) = cols.first() {
+            if cols.iter().all(|c| *c == first) {
+                fill(band, &pts, &Plane::flat(first, bg), style);
+                return Ok(());
+            }
         }
         let ok = simple::ear_clip::<MAX_POLYGON_VERTICES>(&pts, |[a, b, c]| {
-            let tri = [pts[a], pts[b], pts[c]];
-            if let Some(plane) = Plane::triangle(tri, [cols[a], cols[b], cols[c]], bg) {
+            let (Some(&pa), Some(&pb), Some(&pc)) = (pts.get(a), pts.get(b), pts.get(c)) else {
+                return;
+            };
+            let (Some(&ca), Some(&cb), Some(&cc)) = (cols.get(a), cols.get(b), cols.get(c)) else {
+                return;
+            };
+            let tri = [pa, pb, pc];
+            if let Some(plane) = Plane::triangle(tri, [ca, cb, cc], bg) {
                 fill(band, &tri, &plane, style);
             }
         });
@@ -295,8 +304,8 @@ impl<const C: usize> Line<C> {
         }
         // Half the width, 1/2 px, along the normal; rounded to 1/16 px.
         let half = i64::from(crate::SUB_ONE / 2);
-        let nx = ((-dy * half * 2 + len).div_euclid(2 * len)) as i32;
-        let ny = ((dx * half * 2 + len).div_euclid(2 * len)) as i32;
+        let nx = crate::arith::div_floor(-dy * half * 2 + len, 2 * len) as i32;
+        let ny = crate::arith::div_floor(dx * half * 2 + len, 2 * len) as i32;
         let (a, b) = (self.from, self.to);
         let quad = [
             SubPoint::new(a.x + nx, a.y + ny),

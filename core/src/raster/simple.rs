@@ -49,14 +49,17 @@ pub(crate) fn collinear(v: &[SubPoint]) -> bool {
 /// True when no two non-adjacent edges of the closed polygon meet.
 pub(crate) fn is_simple(v: &[SubPoint]) -> bool {
     let n = v.len();
+    let edge = |k: usize| (v.get(k).copied(), v.get((k + 1) % n.max(1)).copied());
     for i in 0..n {
         for j in i + 1..n {
             let adjacent = j == i + 1 || (i == 0 && j == n - 1);
             if adjacent {
                 continue;
             }
-            if segments_meet(v[i], v[(i + 1) % n], v[j], v[(j + 1) % n]) {
-                return false;
+            if let ((Some(a), Some(b)), (Some(c), Some(d))) = (edge(i), edge(j)) {
+                if segments_meet(a, b, c, d) {
+                    return false;
+                }
             }
         }
     }
@@ -73,26 +76,35 @@ fn in_triangle(a: SubPoint, b: SubPoint, c: SubPoint, p: SubPoint, sign: i64) ->
 /// triangles tile the polygon exactly). Returns `false` if no ear is found
 /// (only possible for a polygon that is not simple).
 pub(crate) fn ear_clip<const N: usize>(v: &[SubPoint], mut emit: impl FnMut([usize; 3])) -> bool {
-    let mut idx: heapless::Vec<usize, N> = heapless::Vec::new();
-    for k in 0..v.len() {
-        if idx.push(k).is_err() {
+    // The remaining outline: vertex indices with their points.
+    let mut ring: heapless::Vec<(usize, SubPoint), N> = heapless::Vec::new();
+    for (k, &p) in v.iter().enumerate() {
+        if ring.push((k, p)).is_err() {
             return false;
         }
     }
     let sign = crate::geom::area2(v).signum();
-    while idx.len() > 3 {
-        let m = idx.len();
+    // Scanning resumes where the last ear was cut, so a convex run costs
+    // one test per ear instead of a rescan from the start.
+    let mut k = 0;
+    while ring.len() > 3 {
+        let m = ring.len();
         let mut clipped = false;
-        for k in 0..m {
-            let (ia, ib, ic) = (idx[(k + m - 1) % m], idx[k], idx[(k + 1) % m]);
-            let (a, b, c) = (v[ia], v[ib], v[ic]);
+        for step in 0..m {
+            let at = (k + step) % m;
+            let (Some(&(ia, a)), Some(&(ib, b)), Some(&(ic, c))) = (
+                ring.get((at + m - 1) % m),
+                ring.get(at),
+                ring.get((at + 1) % m),
+            ) else {
+                return false;
+            };
             let turn = cross(a, b, c) * sign;
             if turn < 0 {
                 continue;
             }
             let blocked = turn > 0
-                && idx.iter().any(|&o| {
-                    let p = v[o];
+                && ring.iter().any(|&(o, p)| {
                     o != ia
                         && o != ib
                         && o != ic
@@ -105,7 +117,8 @@ pub(crate) fn ear_clip<const N: usize>(v: &[SubPoint], mut emit: impl FnMut([usi
                 continue;
             }
             emit([ia, ib, ic]);
-            idx.remove(k);
+            ring.remove(at);
+            k = at.saturating_sub(1);
             clipped = true;
             break;
         }
@@ -113,8 +126,8 @@ pub(crate) fn ear_clip<const N: usize>(v: &[SubPoint], mut emit: impl FnMut([usi
             return false;
         }
     }
-    if idx.len() == 3 {
-        emit([idx[0], idx[1], idx[2]]);
+    if let [(a, _), (b, _), (c, _)] = ring[..] {
+        emit([a, b, c]);
     }
     true
 }

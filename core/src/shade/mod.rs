@@ -53,7 +53,7 @@ pub struct Plane<const C: usize> {
 
 /// `round(n / d)` for `d > 0`, halves away from minus infinity.
 fn div_round(n: i64, d: i64) -> i64 {
-    (2 * n + d).div_euclid(2 * d)
+    crate::arith::div_floor(2 * n + d, 2 * d)
 }
 
 impl<const C: usize> Plane<C> {
@@ -141,8 +141,11 @@ impl<const C: usize> Plane<C> {
             return *self;
         }
         let f = |v: i32| {
-            div_round(i64::from(v) * num, den).clamp(i64::from(i32::MIN), i64::from(i32::MAX))
-                as i32
+            crate::arith::limit(
+                div_round(i64::from(v) * num, den),
+                i64::from(i32::MIN),
+                i64::from(i32::MAX),
+            ) as i32
         };
         Self {
             i0: self.i0,
