@@ -117,6 +117,13 @@ pub trait EdgeSink<const C: usize> {
     /// From column `x` of row `y` rightwards, the cover changes by `delta`
     /// (1/4096 px, signed).
     fn cover(&mut self, x: i32, y: i32, delta: i32);
+    /// The columns the sink keeps, `lo..hi`. The walker may then skip
+    /// edge pixels outside them, and report the cover changes of columns
+    /// left of `lo` at `lo` (which is where they apply): a long edge running
+    /// far off the frame costs only its visible part. Default: all columns.
+    fn columns(&self) -> core::ops::Range<i32> {
+        i32::MIN..i32::MAX
+    }
 }
 
 impl<const C: usize> EdgeSink<C> for crate::band::BandBuffer<'_, C> {
@@ -125,5 +132,8 @@ impl<const C: usize> EdgeSink<C> for crate::band::BandBuffer<'_, C> {
     }
     fn cover(&mut self, x: i32, y: i32, delta: i32) {
         self.add_cover(x, y, delta);
+    }
+    fn columns(&self) -> core::ops::Range<i32> {
+        0..i32::from(self.band().width)
     }
 }

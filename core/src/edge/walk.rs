@@ -335,6 +335,15 @@ impl<'a, const C: usize, K: EdgeSink<C>> Walker<'a, C, K> {
         self.sink.cell(x, y, (self.sw * cov) as i32, &v);
     }
 
+    /// Reports a cover change at frame column `x` directly (for the covers
+    /// of skipped columns, which all apply from the sink's first column).
+    fn cover_at(&mut self, y: i64, x: i64, h: i64) {
+        if y < self.ylo || y >= self.yhi || h == 0 {
+            return;
+        }
+        self.sink.cover(x as i32, y as i32, (self.w * h) as i32);
+    }
+
     fn cover(&mut self, y: i64, beta: i64, h: i64) {
         if y < self.ylo || y >= self.yhi || h == 0 {
             return;
@@ -398,8 +407,40 @@ impl<'a, const C: usize, K: EdgeSink<C>> Walker<'a, C, K> {
         } else {
             self.centre_cell(a_start)
         };
+        // Rows whose cover starts at or after column a_stop + 1 (exclusive
+        // end of the rows this walk reports covers for).
+        let rows_end = if a_stop == a1 {
+            b1 + 1
+        } else {
+            self.centre_cell(a_stop)
+        };
+        // Only the columns the sink keeps need walking. Left of them, cover
+        // changes apply from its first column; right of them, they are
+        // dropped. Which side is which depends on the mirror.
+        let cols = self.sink.columns();
+        let (c_lo, c_hi) = (i64::from(cols.start), i64::from(cols.end));
+        let (vis_lo, vis_hi) = if self.e.mirrored {
+            (-c_hi, -1 - c_lo)
+        } else {
+            (c_lo, c_hi - 1)
+        };
+        let w_start = a_start.max(vis_lo);
+        let w_stop = a_stop.min(vis_hi);
+        if w_start > a_start {
+            let reached = if w_start > a_stop {
+                rows_end
+            } else {
+                self.centre_cell(w_start)
+            };
+            if !self.e.mirrored {
+                for row in prev..reached {
+                    self.cover_at(row, c_lo, self.row_cover(row));
+                }
+            }
+            prev = prev.max(reached);
+        }
         let mut st: Option<Step<C>> = None;
-        for a in a_start..=a_stop {
+        for a in w_start..=w_stop {
             let bc = if a == a0 || a == a1 {
                 st = None;
                 let bc = self.centre_cell(a);
@@ -426,7 +467,13 @@ impl<'a, const C: usize, K: EdgeSink<C>> Walker<'a, C, K> {
             }
             prev = prev.max(bc);
         }
-        if a_stop == a1 {
+        if w_stop < a_stop {
+            if self.e.mirrored {
+                for row in prev..rows_end {
+                    self.cover_at(row, c_lo, self.row_cover(row));
+                }
+            }
+        } else if a_stop == a1 {
             for row in prev..=b1 {
                 self.cover(row, a1 + 1, self.row_cover(row));
             }
