@@ -30,8 +30,9 @@ mod scenes;
 pub mod stream;
 
 pub use crc::{crc32, Crc32, POLY_REFLECTED, TABLE as CRC_TABLE};
-pub use scenes::{ALIASED, GOURAUD, LIMITS, LINES, MESH, ONEBIT, SEEDBOX};
+pub use scenes::{ALIASED, GOURAUD, LIMITS, LINES, MESH, ONEBIT, SEEDBOX, SPHERE3D};
 
+use softedge::scene3d;
 use softedge::{
     BandBuffer, BandError, Bands, DrawError, Line, Polygon, PolygonColors, RenderStyle, SubPoint,
     Triangle, MAX_POLYGON_VERTICES,
@@ -43,7 +44,7 @@ pub const MAX_SCENE_WIDTH: u16 = 128;
 
 /// Every reference scene, in the order the listings print them.
 pub const SCENES: &[&Scene] = &[
-    &GOURAUD, &MESH, &LINES, &ALIASED, &ONEBIT, &SEEDBOX, &LIMITS,
+    &GOURAUD, &MESH, &LINES, &ALIASED, &ONEBIT, &SEEDBOX, &LIMITS, &SPHERE3D,
 ];
 
 /// `i32`s of `acc` that every scene of [`SCENES`] fits in.
@@ -119,6 +120,33 @@ pub enum Shape {
     Line(SubPoint, SubPoint, [[u16; 3]; 2]),
     /// A simple polygon.
     Polygon(&'static [SubPoint], Fill),
+    /// A lit 3D object, projected by `softedge::scene3d` in every band.
+    Object(&'static Object3d),
+}
+
+/// Largest mesh a reference [`Object3d`] may have (vertices, triangles):
+/// an 8-segment sphere, so the mesh and its projection scratch (about
+/// 1.4 KiB, on the stack) fit the Cortex-M0's 16 KiB beside the band
+/// buffers (10 segments did not).
+pub const OBJECT_VERTICES: usize = 26;
+/// See [`OBJECT_VERTICES`].
+pub const OBJECT_TRIANGLES: usize = 48;
+
+/// A canonical object seen through a camera, lit by one directional light.
+#[derive(Debug, Clone, Copy)]
+pub struct Object3d {
+    /// The object (at most [`OBJECT_VERTICES`] / [`OBJECT_TRIANGLES`]).
+    pub shape: scene3d::Shape,
+    /// Rotation about x, then y, then z.
+    pub rotation: [scene3d::Angle; 3],
+    /// Linear 12-bit colour per channel.
+    pub color: [u16; 3],
+    /// The camera.
+    pub camera: scene3d::Camera,
+    /// Direction towards the light.
+    pub to_light: scene3d::Vec3,
+    /// Ambient and diffuse weights, 4096 = 1.
+    pub ambient_diffuse: [u16; 2],
 }
 
 /// Why a scene could not be rendered.
@@ -128,6 +156,8 @@ pub enum Error {
     Band(BandError),
     /// A primitive was rejected by core.
     Draw(DrawError),
+    /// A 3D object could not be built or projected.
+    Scene(scene3d::SceneError),
     /// `channels` is neither 1 nor 3.
     Channels,
     /// Wider than [`MAX_SCENE_WIDTH`].
@@ -188,7 +218,10 @@ pub fn render<const C: usize>(
         let mut buf = BandBuffer::<C>::new(acc, cover, band)?;
         buf.clear(channels(scene.background));
         for shape in scene.shapes {
-            draw(shape, &mut buf, &scene.style)?;
+            match shape {
+                Shape::Object(o) => draw_object(o, scene, &mut buf)?,
+                _ => draw(shape, &mut buf, &scene.style)?,
+            }
         }
         for r in 0..band.rows {
             let y = band.y0 + i32::from(r);
@@ -231,7 +264,48 @@ fn draw<const C: usize>(
             let colors = colors.get(..n).unwrap_or(&[]);
             Polygon::new(v, PolygonColors::PerVertex(colors)).draw(buf, style)
         }
+        // Drawn by `draw_object`, which needs the scene's frame.
+        Shape::Object(_) => Ok(()),
     }
+}
+
+/// Builds, lights and projects a 3D object, drawing its front faces into
+/// the band (back-face culling only: use convex objects).
+fn draw_object<const C: usize>(
+    o: &Object3d,
+    scene: &Scene,
+    buf: &mut BandBuffer<'_, C>,
+) -> Result<(), Error> {
+    let mesh =
+        scene3d::Mesh::<OBJECT_VERTICES, OBJECT_TRIANGLES>::new(&o.shape).map_err(Error::Scene)?;
+    let [rx, ry, rz] = o.rotation;
+    let transform = scene3d::Transform::rotation_x(rx)
+        .then(&scene3d::Transform::rotation_y(ry))
+        .and_then(|t| t.then(&scene3d::Transform::rotation_z(rz)))
+        .map_err(Error::Scene)?;
+    let view = o
+        .camera
+        .view(scene.width, scene.height)
+        .map_err(Error::Scene)?;
+    let [ambient, diffuse] = o.ambient_diffuse;
+    let light = scene3d::Light::new(o.to_light, [ambient; C], [diffuse; C]);
+    let mut scratch = [scene3d::ViewVertex::<C>::EMPTY; OBJECT_VERTICES];
+    let mut result = Ok(());
+    scene3d::project_mesh(
+        mesh.as_ref(),
+        &transform,
+        channels(o.color),
+        &view,
+        &light,
+        &mut scratch,
+        |t| {
+            if result.is_ok() {
+                result = t.draw(buf, &scene.style);
+            }
+        },
+    )
+    .map_err(Error::Scene)?;
+    result.map_err(Error::Draw)
 }
 
 #[cfg(test)]

@@ -5,7 +5,8 @@
 //! Sizes are chosen for a 16 KiB Cortex-M0: the largest scene needs
 //! `ACC_LEN + COVER_LEN` `i32`s (about 6 KiB) of band buffers.
 
-use crate::{Fill, Scene, Shape};
+use crate::{Fill, Object3d, Scene, Shape};
+use softedge::scene3d;
 use softedge::{PixelModel, RenderStyle, SubPoint, LIN_MAX, SUB_ONE};
 
 /// Sub-pixel units per pixel, short for the coordinate tables below.
@@ -463,4 +464,40 @@ pub const LIMITS: Scene = Scene {
     style: AA,
     background: [300; 3],
     shapes: &LIMITS_SHAPES,
+};
+
+/// A lit sphere (8 segments, RGB) through an orthographic camera: the 3D
+/// stage (transform, Lambert lighting, projection, back-face culling) joins
+/// the scenes every target must agree on.
+pub const SPHERE3D: Scene = Scene {
+    name: "sphere3d",
+    width: 64,
+    height: 48,
+    channels: 3,
+    band_rows: 8,
+    style: RenderStyle {
+        antialias: true,
+        model: PixelModel::Box,
+    },
+    background: [200, 300, 600],
+    shapes: &[Shape::Object(&Object3d {
+        shape: scene3d::Shape::Sphere {
+            radius: scene3d::I16F16::from_bits(2 << 16),
+            segments: 8,
+        },
+        rotation: [
+            scene3d::Angle::from_degrees(25),
+            scene3d::Angle::from_degrees(40),
+            scene3d::Angle::from_degrees(0),
+        ],
+        color: [3900, 2600, 900],
+        camera: scene3d::Camera::orthographic(
+            scene3d::Vec3::from_int(0, 0, 10),
+            scene3d::Vec3::ZERO,
+            scene3d::Vec3::from_int(0, 1, 0),
+            scene3d::I16F16::from_bits(10 << 16),
+        ),
+        to_light: scene3d::Vec3::from_int(-1, -1, 2),
+        ambient_diffuse: [600, 3400],
+    })],
 };
