@@ -256,8 +256,10 @@ impl Lab {
     /// Back to linear 12-bit RGB: the inverse cube-root table (with
     /// interpolation) for each of `X`, `Y`, `Z`, then the inverse matrix
     /// (9 widening multiplies), rounded and clamped to `0..=4095`. The flag
-    /// is `true` when the colour lies outside the RGB gamut (a channel had
-    /// to be clamped, or a cube-root value lay outside `[f(0), f(1)]`).
+    /// is `true` when the colour lies outside the RGB gamut: a channel more
+    /// than one level outside `0..=4095` (the conversion itself is exact to
+    /// one level, see the round-trip test), or a cube-root value outside
+    /// `[f(0), f(1)]`.
     ///
     /// ```
     /// use softedge::postfilter::Lab;
@@ -281,14 +283,12 @@ impl Lab {
                 s += i64::from(row[c]) * t[c];
             }
             let v = s >> shift;
-            if v < 0 {
+            // The conversion is exact to one level (the round trip), so a
+            // result one level outside the range is rounding, not gamut.
+            if v < -1 || v > i64::from(LIN_MAX) + 1 {
                 clamped = true;
-            } else if v > i64::from(LIN_MAX) {
-                clamped = true;
-                *o = LIN_MAX;
-            } else {
-                *o = v as u16;
             }
+            *o = v.clamp(0, i64::from(LIN_MAX)) as u16;
         }
         (out, clamped)
     }

@@ -46,7 +46,8 @@
 //! `k ∇²F < 2^31` fits `i32`.
 //!
 //! When `ΔF = 0` (`k = 0`, or a flat neighbourhood) the input pixel is
-//! copied, bit for bit; only pixels whose lightness changes go through the
+//! copied, bit for bit (values above 4095, which the band buffer never
+//! gives, are clamped to 4095); only pixels whose lightness changes go through the
 //! conversion back.
 //!
 //! ## Per-pixel work
@@ -107,6 +108,7 @@ pub use tables::{
 };
 
 use crate::band::MAX_WIDTH;
+use crate::shade::LIN_MAX;
 
 /// A pixel the filter can work on: gray `[u16; 1]` or RGB `[u16; 3]`,
 /// linear 12-bit (values above 4095 are read as 4095).
@@ -116,6 +118,7 @@ use crate::band::MAX_WIDTH;
 /// assert_eq!([4095u16].lightness_f(), F_ONE);
 /// assert_eq!([4095u16; 3].lightness_f(), F_ONE);
 /// assert_eq!([2048u16].lighten(0), ([2048], false));
+/// assert_eq!([5000u16, 7, 4096].clipped(), [4095, 7, 4095]);
 /// ```
 pub trait LightnessPixel: Copy + sealed::Sealed {
     /// `F_ONE * f(Y/Yn)`: `L* = 116 F / F_ONE - 16`.
@@ -123,6 +126,9 @@ pub trait LightnessPixel: Copy + sealed::Sealed {
     /// The pixel with `L*` changed by `116 delta_f / F_ONE` and `a*`, `b*`
     /// kept, clamped to `0..=4095`; `true` when clamping was needed.
     fn lighten(self, delta_f: i32) -> (Self, bool);
+    /// The pixel with every channel clamped to `0..=4095` (how the filter
+    /// copies a pixel it does not change; a no-op on resolved band values).
+    fn clipped(self) -> Self;
 }
 
 mod sealed {
@@ -132,6 +138,10 @@ mod sealed {
 }
 
 impl LightnessPixel for [u16; 1] {
+    #[inline]
+    fn clipped(self) -> Self {
+        self.map(|v| v.min(LIN_MAX))
+    }
     #[inline]
     fn lightness_f(self) -> i32 {
         lab::fy_of_gray(self[0])
@@ -150,6 +160,10 @@ impl LightnessPixel for [u16; 1] {
 }
 
 impl LightnessPixel for [u16; 3] {
+    #[inline]
+    fn clipped(self) -> Self {
+        self.map(|v| v.min(LIN_MAX))
+    }
     #[inline]
     fn lightness_f(self) -> i32 {
         lab::fy_of_rgb(self)
@@ -274,7 +288,7 @@ fn filter_row<P: LightnessPixel>(
         );
         let p = input[x];
         if k == 0 {
-            out[x] = p;
+            out[x] = p.clipped();
             continue;
         }
         let left = i32::from(f_mid[x.saturating_sub(1)]);
@@ -282,7 +296,7 @@ fn filter_row<P: LightnessPixel>(
         let lap = i32::from(f_up[x]) + i32::from(f_down[x]) + left + right - (c << 2);
         let delta = (lap * k + (1 << (K_FRAC - 1))) >> K_FRAC;
         if delta == 0 {
-            out[x] = p;
+            out[x] = p.clipped();
             continue;
         }
         let (q, clamped) = p.lighten(delta);
