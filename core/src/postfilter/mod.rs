@@ -66,6 +66,11 @@
 //! conversion; every nonlinear function is a table. The filter is the only
 //! stage with per-pixel multiplies; it is optional.
 //!
+//! Measured on the host (x86-64, release, callgrind, a 128x128 image of
+//! 4x4 blocks of light colours, 73 % of pixels changed): about 112
+//! instructions per pixel for gray and 282 for RGB, the whole filter
+//! included.
+//!
 //! Tables (flash): [`F_TABLE`] and [`F_INV_TABLE`], 8194 bytes each;
 //! [`LSTAR_STEPS`] 200 bytes, [`K_TWENTIETHS`] 101, [`K_Q15`] 202, the two
 //! matrices 72: about 16.6 KiB in all.
@@ -179,7 +184,7 @@ impl LightnessPixel for [u16; 3] {
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum FilterError {
     /// Width or height is zero, or the width is over
-    /// [`MAX_WIDTH`](crate::band::MAX_WIDTH).
+    /// [`MAX_WIDTH`].
     BadSize,
     /// The input holds fewer pixels than the rows it must hold.
     InputTooShort,

@@ -16,21 +16,41 @@
 
 /// `f = 1` in the units of the cube-root values `F` (`fx`, `fy`, `fz`):
 /// `L* = 116 F / F_ONE - 16`.
+/// ```
+/// use softedge::postfilter::{Lab, F_ONE};
+/// assert_eq!(Lab::from_gray(4095).fy, F_ONE);
+/// ```
 pub const F_ONE: i32 = 65535;
 
 /// Fraction bits of a tristimulus value `T` (`X/Xn`, `Y/Yn`, `Z/Zn`) below
 /// the 12 bits of `lin12`.
+/// ```
+/// use softedge::postfilter::{T_FRAC, T_ONE};
+/// assert_eq!(T_ONE, 4095 << T_FRAC);
+/// ```
 pub const T_FRAC: u32 = 4;
 
 /// `X/Xn = 1` in tristimulus units: `4095 << 4 = 65520`, so a gray `lin12`
 /// value `v` has `Y/Yn = 16 v` exactly.
+/// ```
+/// use softedge::postfilter::{F_INV_TABLE, T_ONE};
+/// assert!(i32::from(F_INV_TABLE[4095]) <= T_ONE);
+/// ```
 pub const T_ONE: i32 = 4095 << T_FRAC;
 
 /// Entries of [`F_TABLE`] and [`F_INV_TABLE`]: one per 12-bit index, plus
 /// one so that linear interpolation may read `i + 1`.
+/// ```
+/// use softedge::postfilter::{F_TABLE, TABLE_LEN};
+/// assert_eq!(F_TABLE.len(), TABLE_LEN);
+/// ```
 pub const TABLE_LEN: usize = 4097;
 
 /// `F` of black: `round(F_ONE * 4/29)` (the foot of the linear segment).
+/// ```
+/// use softedge::postfilter::{Lab, F_BLACK};
+/// assert_eq!(Lab::from_gray(0).fy, F_BLACK);
+/// ```
 pub const F_BLACK: i32 = ((2 * F_ONE as i64 * 4 + 29) / (2 * 29)) as i32;
 
 /// `round(a / b)` for `a >= 0`, `b > 0`.
@@ -95,6 +115,13 @@ const fn f_inv_entry(i: u128) -> u16 {
 /// The cube-root table: `f(t)` for `t = i / 4095`, in units of
 /// `1 / F_ONE` (so it is also the `Y -> L*` table: `L* = 116 F / F_ONE - 16`).
 /// One table serves `X`, `Y` and `Z`.
+///
+/// ```
+/// use softedge::postfilter::{F_ONE, F_TABLE};
+/// // Y/Yn = 0.5 (2047.5 / 4095): L* = 116 * 0.5^(1/3) - 16 = 76.07
+/// let l = 116.0 * f64::from(F_TABLE[2048]) / f64::from(F_ONE) - 16.0;
+/// assert!((l - 76.08).abs() < 0.01);
+/// ```
 pub static F_TABLE: [u16; TABLE_LEN] = {
     let mut t = [0u16; TABLE_LEN];
     let mut i = 0;
@@ -107,6 +134,14 @@ pub static F_TABLE: [u16; TABLE_LEN] = {
 
 /// The inverse table: `f⁻¹(u)` for `u = 16 i / F_ONE`, in tristimulus units
 /// (`T_ONE` = the white point).
+///
+/// ```
+/// use softedge::postfilter::{F_INV_TABLE, F_TABLE, T_FRAC};
+/// // f⁻¹(f(t)) = t, to a fraction of a level
+/// let f = F_TABLE[1000];
+/// let t = F_INV_TABLE[usize::from(f >> 4)];
+/// assert!(((t >> T_FRAC) as i32 - 1000).abs() <= 1);
+/// ```
 pub static F_INV_TABLE: [u16; TABLE_LEN] = {
     let mut t = [0u16; TABLE_LEN];
     let mut i = 0;
@@ -121,6 +156,11 @@ pub static F_INV_TABLE: [u16; TABLE_LEN] = {
 /// at least `n - 1/2`: `ceil((2n + 31) F_ONE / 232)`, `n = 1..=100`. The
 /// number of steps at or below `F` is `L*` rounded to the nearest integer
 /// (halves up).
+///
+/// ```
+/// use softedge::postfilter::LSTAR_STEPS;
+/// assert!(LSTAR_STEPS.windows(2).all(|w| w[0] < w[1]));
+/// ```
 pub static LSTAR_STEPS: [u16; 100] = {
     let mut t = [0u16; 100];
     let mut n = 1;
@@ -169,11 +209,20 @@ pub static K_TWENTIETHS: [u8; 101] = {
 };
 
 /// Fraction bits of [`K_Q15`].
+/// ```
+/// use softedge::postfilter::{K_FRAC, K_Q15};
+/// assert_eq!(K_Q15[85], ((1u32 << K_FRAC) / 5) as u16 + 1); // 0.2 = 6553.6 / 2^15, rounded
+/// ```
 pub const K_FRAC: u32 = 15;
 
 /// `k` in Q15 by integer `L*`: `round(2^15 * K_TWENTIETHS[L*] / 20)`. The
 /// rounding moves `k` by at most `2^-16`, `L*` by at most `400 * 2^-16 <
 /// 0.007` (the Laplacian of `L*` is at most 400 in magnitude).
+///
+/// ```
+/// use softedge::postfilter::K_Q15;
+/// assert_eq!(K_Q15[60], 1638); // 0.05 * 32768 = 1638.4
+/// ```
 pub static K_Q15: [u16; 101] = {
     let mut t = [0u16; 101];
     let mut l = 0;
