@@ -60,6 +60,7 @@ pub mod edge;
 #[cfg(feature = "embedded-graphics")]
 pub mod eg;
 pub mod geom;
+pub mod postfilter;
 pub mod raster;
 pub mod scene3d;
 pub mod shade;
