@@ -1,8 +1,8 @@
 //! Images on the host: linear 12-bit frames as rendered, 8-bit sRGB images
-//! for viewing, and the few operations the gallery needs (upscaling,
-//! compositing, rectangles).
+//! for viewing (through `softedge::tone`'s sRGB table), and the few
+//! operations the gallery needs (upscaling, compositing, rectangles).
 
-use std::sync::OnceLock;
+use softedge::tone::{Curve, GammaLut};
 
 /// A rendered frame: linear 12-bit values (`0..=4095`) per channel, rows top
 /// to bottom. `C` is 1 (gray) or 3 (RGB).
@@ -114,29 +114,28 @@ impl<const C: usize> LinImage<C> {
     }
 }
 
+/// The sRGB encoding table of the firmware's tone stage
+/// ([`GammaLut`] for [`Curve::Srgb`], IEC 61966-2-1), built at compile time.
+static SRGB8: GammaLut = GammaLut::new(Curve::Srgb);
+
 /// Linear 12-bit intensity to an 8-bit sRGB code, for viewing on a PC.
 ///
-/// This is the host simulator's one tone conversion, a stand-in until
-/// `softedge::tone` (the firmware's γ tables) lands; swap it here. It uses
-/// the sRGB transfer function (IEC 61966-2-1) in `f64`, rounded to nearest,
-/// through a 4096-entry table built on first use. Values above 4095 are
-/// treated as 4095.
+/// This is `softedge::tone`'s own sRGB table ([`GammaLut`] for
+/// [`Curve::Srgb`]): a PC monitor is an sRGB display, so the simulator
+/// shows a frame exactly as firmware would send it to an sRGB panel.
+/// Values above 4095 are treated as 4095.
 pub fn lin12_to_srgb8(lin12: u16) -> u8 {
-    static TABLE: OnceLock<Vec<u8>> = OnceLock::new();
-    let table = TABLE.get_or_init(|| {
-        (0..=softedge::LIN_MAX)
-            .map(|v| {
-                let l = f64::from(v) / f64::from(softedge::LIN_MAX);
-                let s = if l <= 0.003_130_8 {
-                    12.92 * l
-                } else {
-                    1.055 * l.powf(1.0 / 2.4) - 0.055
-                };
-                (s * 255.0).round().clamp(0.0, 255.0) as u8
-            })
-            .collect()
-    });
-    table[usize::from(lin12.min(softedge::LIN_MAX))]
+    SRGB8.code(lin12)
+}
+
+/// Light emitted by a display, as a fraction `0..=1` of its white (values
+/// outside are clamped), to the 8-bit sRGB code that makes a PC monitor
+/// emit the same fraction: rounded to linear 12 bits, then
+/// [`lin12_to_srgb8`]. Used to show what a simulated display of another
+/// transfer curve (γ = 2.4, say) emits.
+pub fn emitted_to_srgb8(light: f64) -> u8 {
+    let lin12 = (light.clamp(0.0, 1.0) * f64::from(softedge::LIN_MAX)).round() as u16;
+    lin12_to_srgb8(lin12)
 }
 
 /// Channel layout of an [`Image8`].
@@ -344,6 +343,29 @@ mod tests {
         assert_eq!(lin12_to_srgb8(2048), 188);
         let codes: Vec<u8> = (0..=4095).map(lin12_to_srgb8).collect();
         assert!(codes.windows(2).all(|w| w[0] <= w[1]));
+    }
+
+    #[test]
+    fn tone_srgb_table_matches_the_f64_formula() {
+        // An independent f64 evaluation of IEC 61966-2-1, rounded to nearest.
+        for v in 0..=softedge::LIN_MAX {
+            let l = f64::from(v) / f64::from(softedge::LIN_MAX);
+            let s = if l <= 0.003_130_8 {
+                12.92 * l
+            } else {
+                1.055 * l.powf(1.0 / 2.4) - 0.055
+            };
+            let want = (s * 255.0).round() as u8;
+            assert_eq!(lin12_to_srgb8(v), want, "lin12 {v}");
+        }
+    }
+
+    #[test]
+    fn emitted_light_is_shown_as_srgb() {
+        assert_eq!(emitted_to_srgb8(0.0), 0);
+        assert_eq!(emitted_to_srgb8(1.0), 255);
+        assert_eq!(emitted_to_srgb8(7.0), 255);
+        assert_eq!(emitted_to_srgb8(0.5), lin12_to_srgb8(2048));
     }
 
     #[test]

@@ -7,22 +7,34 @@
 //! | `03-gouraud-gray.png` | gray Gouraud triangles, a linear ramp and a fan |
 //! | `04-gouraud-rgb_wheel-vs-triangle.png` | an RGB colour wheel (a fan of 36 triangles), an RGB triangle |
 //! | `05-seams_triangles-vs-mesh-vs-polygon-vs-diff.png` | top row: a jittered mesh of 108 triangles each in its own colour (to show them), the same triangles in one flat colour, the outline as one polygon, the difference of the last two (any difference white); bottom row: the same for a fan of 64 triangles and a 64-gon |
+//! | `06-gamma_uncorrected-vs-corrected.png` | one gray frame (a linear ramp, 1-px lines on pixel rows and on row borders, a flat half gray, dots and lines stepped by 1/8 px) as a γ = 2.4 display shows it with linear codes and through the γ table (module `gamma`) |
+//! | `07-oled-1bit_reference-vs-aliased-vs-bayer-vs-floyd-steinberg.png` | a 128x64 SSD1306 frame rendered page by page: the anti-aliased linear frame in gray, aliased 1-bit, Bayer 8x8 and Floyd–Steinberg dithered (module `oled`) |
+//! | `08-flicker_chart.png` | summed linear intensity and perceived brightness (with and without γ correction) of a 1x1 px square and two short lines over 16x16 sub-pixel offsets, each twice: 0.88-1.12 and 0-1.2 (module `flicker`) |
+//! | `09-objects-3d_lod-low-vs-high.png` | sphere, torus, cone, cylinder, box and a composite, lit and anti-aliased, at a low and a high level of detail (module `objects`) |
 //!
 //! Every panel is rendered band by band ([`render`]), converted to sRGB by
-//! [`lin12_to_srgb8`](crate::image::lin12_to_srgb8), magnified by an integer
-//! factor and labelled with the built-in 3x5 font.
+//! [`lin12_to_srgb8`](crate::image::lin12_to_srgb8) (image 06 goes through
+//! a simulated γ = 2.4 display first, module `display`; image 08 is a chart
+//! of numbers measured on that display), magnified by an integer factor and
+//! labelled with the built-in 3x5 font.
 
 use std::f64::consts::PI;
 use std::fmt;
 use std::io;
 use std::path::{Path, PathBuf};
 
-use softedge::{Line, RenderStyle, SubPoint, Triangle, LIN_MAX, SUB_ONE};
+use softedge::{DrawError, Line, RenderStyle, SubPoint, Triangle, LIN_MAX, SUB_ONE};
 
 use crate::font::{draw_text, text_width, GLYPH_H};
 use crate::image::{Channels, Image8, LinImage};
 use crate::png_out::write_png;
 use crate::scene::{render, PolyColors, Primitive, RenderError, Scene};
+
+mod display;
+mod flicker;
+mod gamma;
+mod objects;
+mod oled;
 
 /// Options of [`write_gallery`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -72,6 +84,24 @@ pub enum GalleryError {
         /// The cause.
         source: RenderError,
     },
+    /// A primitive drawn directly into a band was rejected (a bug in the
+    /// gallery or in core).
+    Draw {
+        /// The image being made.
+        image: &'static str,
+        /// The cause.
+        source: DrawError,
+    },
+    /// A 3D object could not be meshed, placed or projected (a bug in the
+    /// gallery or in core).
+    Geometry {
+        /// The image being made.
+        image: &'static str,
+        /// The object.
+        object: &'static str,
+        /// The cause, as core reported it.
+        detail: String,
+    },
 }
 
 impl fmt::Display for GalleryError {
@@ -79,6 +109,12 @@ impl fmt::Display for GalleryError {
         match self {
             Self::Io { path, source } => write!(f, "{}: {source}", path.display()),
             Self::Render { image, source } => write!(f, "rendering {image}: {source}"),
+            Self::Draw { image, source } => write!(f, "drawing {image}: {source:?}"),
+            Self::Geometry {
+                image,
+                object,
+                detail,
+            } => write!(f, "{image}: object {object}: {detail}"),
         }
     }
 }
@@ -88,12 +124,13 @@ impl std::error::Error for GalleryError {
         match self {
             Self::Io { source, .. } => Some(source),
             Self::Render { source, .. } => Some(source),
+            Self::Draw { .. } | Self::Geometry { .. } => None,
         }
     }
 }
 
 /// Number of files [`write_gallery`] writes.
-pub const GALLERY_FILES: usize = 5;
+pub const GALLERY_FILES: usize = 9;
 
 /// Renders the gallery into `dir` (created if missing). `log` receives one
 /// progress line per image and one `wrote PATH (WxH)` line per file.
@@ -260,7 +297,194 @@ pub fn write_gallery(
         log,
     )?;
 
+    // (d) Tone: γ, 1-bit dithering, flicker.
+    log(&format!(
+        "[6/{n}] gamma: linear codes | gamma table, on a gamma 2.4 display"
+    ));
+    let sheet = gamma_sheet(opts.band_rows, scale, log)?;
+    save("06-gamma_uncorrected-vs-corrected.png", &sheet, log)?;
+
+    log(&format!(
+        "[7/{n}] 1-bit OLED 128x64: reference | aliased | Bayer 8x8 | Floyd-Steinberg"
+    ));
+    let sheet = oled_sheet(scale, log)?;
+    save(
+        "07-oled-1bit_reference-vs-aliased-vs-bayer-vs-floyd-steinberg.png",
+        &sheet,
+        log,
+    )?;
+
+    log(&format!("[8/{n}] flicker: 256 sub-pixel offsets"));
+    let sheet = flicker_sheet(log)?;
+    save("08-flicker_chart.png", &sheet, log)?;
+
+    // (e) 3D.
+    log(&format!("[9/{n}] 3D objects at two levels of detail"));
+    let sheet = objects_sheet(scale, log)?;
+    save("09-objects-3d_lod-low-vs-high.png", &sheet, log)?;
+
     Ok(written)
+}
+
+/// Image 06: the γ frame on a simulated γ = 2.4 display, uncorrected and
+/// corrected, with the measured half-cover error in the labels.
+fn gamma_sheet(
+    band_rows: u16,
+    scale: u32,
+    log: &mut dyn FnMut(&str),
+) -> Result<Image8, GalleryError> {
+    use display::Codes;
+    let img = render(&gamma::scene().with_band_rows(band_rows)).map_err(|source| {
+        GalleryError::Render {
+            image: "gamma",
+            source,
+        }
+    })?;
+    let mut panels = Vec::new();
+    for (codes, name) in [
+        (Codes::Uncorrected, "A: CODE = LIN12/16"),
+        (Codes::Corrected, "B: GAMMALUT 2.4"),
+    ] {
+        let h = gamma::half_cover(&img, codes);
+        log(&format!(
+            "      {}: half-covered square {}, stripes on row borders {}",
+            if codes == Codes::Corrected {
+                "gamma table"
+            } else {
+                "linear codes"
+            },
+            pct(h.square),
+            pct(h.stripes)
+        ));
+        panels.push(Panel::new(
+            &format!("{name}, HALF PX {}", pct(h.square)),
+            gamma::view(&img, codes),
+            scale,
+        ));
+    }
+    Ok(compose(
+        "GAMMA 2.4 DISPLAY (SHOWN AS SRGB): UNCORRECTED / CORRECTED",
+        &[panels],
+    ))
+}
+
+/// Image 07: the SSD1306 frame, 1-bit.
+fn oled_sheet(scale: u32, log: &mut dyn FnMut(&str)) -> Result<Image8, GalleryError> {
+    let o = oled::render(&oled::shapes()).map_err(|source| GalleryError::Draw {
+        image: "oled",
+        source,
+    })?;
+    let mean = o.linear.sum() as f64
+        / f64::from(LIN_MAX)
+        / f64::from(o.linear.width() * o.linear.height());
+    log(&format!(
+        "      mean linear intensity {:.2} %, lit: bayer {:.2} %, floyd-steinberg {:.2} %, aliased {:.2} %",
+        mean * 100.0,
+        oled::lit_fraction(&o.bayer) * 100.0,
+        oled::lit_fraction(&o.floyd) * 100.0,
+        oled::lit_fraction(&o.aliased) * 100.0
+    ));
+    let rows = vec![
+        vec![
+            Panel::new("AA, LINEAR GRAY (REFERENCE)", o.linear.to_srgb8(), scale),
+            Panel::new("ALIASED, COVERED = ON", oled::show(&o.aliased), scale),
+        ],
+        vec![
+            Panel::new("AA, BAYER 8X8", oled::show(&o.bayer), scale),
+            Panel::new(
+                "AA, FLOYD-STEINBERG ACROSS PAGES",
+                oled::show(&o.floyd),
+                scale,
+            ),
+        ],
+    ];
+    Ok(compose("1-BIT OLED 128X64, 8-ROW PAGES", &rows))
+}
+
+/// Image 08: the flicker chart; prints the worst deviations.
+fn flicker_sheet(log: &mut dyn FnMut(&str)) -> Result<Image8, GalleryError> {
+    let mut rows = Vec::new();
+    for (probe, name) in flicker::Probe::ALL {
+        let c = flicker::measure(probe).map_err(|source| GalleryError::Draw {
+            image: "flicker",
+            source,
+        })?;
+        let (lin, cor, unc) = (
+            flicker::worst(&c.linear),
+            flicker::worst(&c.corrected),
+            flicker::worst(&c.uncorrected),
+        );
+        log(&format!(
+            "flicker, {}: linear {}, gamma-corrected {}, uncorrected {} (worst of {} offsets)",
+            name.to_lowercase(),
+            pct(lin),
+            pct(cor),
+            pct(unc),
+            flicker::OFFSETS
+        ));
+        rows.push(vec![
+            Panel::new(
+                &format!("{name}: LIN {}, GAMMA {}", pct(lin), pct(cor)),
+                flicker::chart(&c, 0.88, 1.12, &[0.9, 1.0, 1.1], true),
+                1,
+            ),
+            Panel::new(
+                &format!("FULL SCALE: UNCORRECTED {}", pct(unc)),
+                flicker::chart(&c, 0.0, 1.2, &[0.0, 0.5, 1.0], false),
+                1,
+            ),
+        ]);
+    }
+    Ok(compose(
+        "FLICKER: RELATIVE BRIGHTNESS OVER 16X16 SUB-PIXEL OFFSETS (X: 16*DY+DX)",
+        &rows,
+    ))
+}
+
+/// Image 09: the 3D objects, low detail above, high detail below.
+fn objects_sheet(scale: u32, log: &mut dyn FnMut(&str)) -> Result<Image8, GalleryError> {
+    let mag = (scale * 3 / 4).max(1);
+    let mut rows = Vec::new();
+    for (segments, coarse) in [(8u16, true), (24, false)] {
+        let geometry = |object: &'static str, e: &dyn fmt::Debug| GalleryError::Geometry {
+            image: "objects",
+            object,
+            detail: format!("{e:?}"),
+        };
+        let objs = objects::objects(segments, coarse).map_err(|e| geometry("all", &e))?;
+        let mut panels = Vec::new();
+        for obj in &objs {
+            let (img, stats) = objects::render_object(obj).map_err(|e| geometry(obj.name, &e))?;
+            let twice = objects::overlap(obj).map_err(|e| geometry(obj.name, &e))?;
+            log(&format!(
+                "      {} {}: {} triangles drawn, {} back-facing culled, {twice} px covered twice",
+                obj.name.to_lowercase(),
+                obj.lod.to_lowercase(),
+                stats.emitted,
+                stats.back_facing
+            ));
+            panels.push(Panel::new(
+                &format!("{} {}", obj.name, obj.lod),
+                img.to_srgb8(),
+                mag,
+            ));
+        }
+        rows.push(panels);
+    }
+    Ok(compose(
+        "3D: AMBIENT + LAMBERT, BACK-FACE CULLING ONLY: TORUS ALONG ITS AXIS, COMPOSITE FROM ABOVE",
+        &rows,
+    ))
+}
+
+/// A relative deviation as a signed percentage: two decimals below 1 %,
+/// one above.
+fn pct(v: f64) -> String {
+    if v.abs() < 0.01 {
+        format!("{:+.2} %", v * 100.0)
+    } else {
+        format!("{:+.1} %", v * 100.0)
+    }
 }
 
 /// The crop of the edge scene shown magnified: `(x, y, w, h)`.
@@ -623,6 +847,20 @@ mod tests {
         };
         let written = write_gallery(&dir, &opts, &mut |l| lines.push(l.to_string())).unwrap();
         assert_eq!(written.len(), GALLERY_FILES);
+        let mut names: Vec<String> = written
+            .iter()
+            .map(|w| w.path.file_name().unwrap().to_string_lossy().into_owned())
+            .collect();
+        names.dedup();
+        assert_eq!(names.len(), GALLERY_FILES, "{names:?}");
+        for prefix in ["06-gamma", "07-oled-1bit", "08-flicker", "09-objects-3d"] {
+            assert!(names.iter().any(|n| n.starts_with(prefix)), "{prefix}");
+        }
+        // The flicker numbers are printed, one line per object.
+        assert_eq!(
+            lines.iter().filter(|l| l.starts_with("flicker, ")).count(),
+            3
+        );
         for w in &written {
             let meta = std::fs::metadata(&w.path).unwrap();
             assert!(meta.len() > 0, "{} is empty", w.path.display());
