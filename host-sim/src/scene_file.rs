@@ -44,6 +44,8 @@ mod diag;
 mod display;
 mod objects;
 mod raw;
+#[cfg(feature = "window")]
+pub mod window;
 
 use std::ops::Range;
 use std::path::{Path, PathBuf};
