@@ -116,12 +116,16 @@ fn gallery(args: &[String]) -> Result<(), Failure> {
 /// Loads a scene file, printing its warnings; errors name file, line and
 /// field.
 fn load_scene(path: &str) -> Result<SceneFile, Failure> {
-    let file = scene_file::load(std::path::Path::new(path)).map_err(|d| Failure::Run(d.to_string()))?;
+    let file =
+        scene_file::load(std::path::Path::new(path)).map_err(|d| Failure::Run(d.to_string()))?;
     for w in &file.warnings {
         eprintln!("softedge-sim: warning: {w}");
     }
     Ok(file)
 }
+
+/// A scene command's options, each `(name, value)`.
+type Options<'a> = Vec<(&'a str, String)>;
 
 /// The one positional argument (the scene file) and the options of a
 /// scene command, each option with a value.
@@ -129,7 +133,7 @@ fn scene_args<'a>(
     cmd: &str,
     args: &'a [String],
     options: &[&str],
-) -> Result<(String, Vec<(&'a str, String)>), Failure> {
+) -> Result<(String, Options<'a>), Failure> {
     let mut scene = None;
     let mut opts = Vec::new();
     let mut it = args.iter();
@@ -145,7 +149,9 @@ fn scene_args<'a>(
         } else if scene.is_none() {
             scene = Some(a.clone());
         } else {
-            return Err(Failure::Usage(format!("{cmd} takes one scene file, not also `{a}`")));
+            return Err(Failure::Usage(format!(
+                "{cmd} takes one scene file, not also `{a}`"
+            )));
         }
     }
     let scene = scene.ok_or_else(|| Failure::Usage(format!("{cmd} needs a SCENE.toml")))?;
@@ -170,7 +176,9 @@ fn render(args: &[String]) -> Result<(), Failure> {
     }
     let out = out.ok_or_else(|| Failure::Usage("render needs -o OUT.png".into()))?;
     let file = load_scene(&scene)?;
-    let lin = file.render_linear().map_err(|d| Failure::Run(d.to_string()))?;
+    let lin = file
+        .render_linear()
+        .map_err(|d| Failure::Run(d.to_string()))?;
     if let Some(raw) = &raw {
         std::fs::write(raw, pnm16(&lin))
             .map_err(|e| Failure::Run(format!("cannot write {}: {e}", raw.display())))?;
@@ -186,7 +194,9 @@ fn render(args: &[String]) -> Result<(), Failure> {
 fn crc(args: &[String]) -> Result<(), Failure> {
     let (scene, _) = scene_args("crc", args, &[])?;
     let file = load_scene(&scene)?;
-    let lin = file.render_linear().map_err(|d| Failure::Run(d.to_string()))?;
+    let lin = file
+        .render_linear()
+        .map_err(|d| Failure::Run(d.to_string()))?;
     println!("crc {} {:08x}", file.stem(), file.tone(&lin).crc32());
     Ok(())
 }
@@ -210,7 +220,9 @@ fn bits(args: &[String]) -> Result<(), Failure> {
         *slot = Some(x);
     }
     let (Some(k), Some(d), Some(g)) = (k, d, g) else {
-        return Err(Failure::Usage("bits needs --contrast, --delta and --gamma".into()));
+        return Err(Failure::Usage(
+            "bits needs --contrast, --delta and --gamma".into(),
+        ));
     };
     let levels = softedge::tone::levels(k, d, g).map_err(|_| {
         Failure::Run(format!(

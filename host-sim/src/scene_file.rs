@@ -168,7 +168,7 @@ pub fn load(path: &Path) -> Result<SceneFile, Diagnostic> {
 /// Checks the scene `text` of the file `path` (used in messages only).
 pub fn parse(path: &Path, text: &str) -> Result<SceneFile, Diagnostic> {
     let src = Source { path, text };
-    let file: raw::File = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
+    let file: raw::File = toml::from_str(text).map_err(|e| src.toml_error(&e))?;
     let mut ck = Checker {
         src: src.clone(),
         warnings: Vec::new(),

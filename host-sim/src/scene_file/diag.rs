@@ -103,7 +103,7 @@ impl<'a> Source<'a> {
     }
 
     /// The diagnostic for a parser or serde error.
-    pub fn from_toml(&self, e: &toml::de::Error) -> Diagnostic {
+    pub fn toml_error(&self, e: &toml::de::Error) -> Diagnostic {
         let message = e.message().trim().to_string();
         let Some(span) = e.span() else {
             return Diagnostic {
@@ -116,8 +116,20 @@ impl<'a> Source<'a> {
             };
         };
         let mut field = field_at(self.text, span.start);
-        if let Some(missing) = missing_field(&message) {
-            field = join(&field, &missing);
+        // A missing top-level table comes with an empty span at 0.
+        let whole = span.start == 0 && span.is_empty();
+        if let (true, Some(missing)) = (whole, missing_field(&message)) {
+            // The whole document: a missing top-level table.
+            field = missing;
+        } else if let Some(name) = header_like(line_at(self.text, span.start)) {
+            // On a table header: the table is the field (an unknown table,
+            // a malformed header, a missing key of that table).
+            field = name.to_string();
+            if let Some(missing) = missing_field(&message) {
+                field = join(&table_at(self.text, span.start), &missing);
+            }
+        } else if let Some(missing) = missing_field(&message) {
+            field = join(&table_at(self.text, span.start), &missing);
         } else if let Some(unknown) = backticked(&message, "unknown field `") {
             // The span may sit on the table rather than on the key.
             if !field.ends_with(&unknown) {
@@ -162,6 +174,28 @@ fn header(line: &str) -> Option<(&str, bool)> {
             .chars()
             .all(|c| c.is_ascii_alphanumeric() || "_-.\"".contains(c));
     ok.then_some((name, array))
+}
+
+/// The line holding byte `offset`.
+fn line_at(text: &str, offset: usize) -> &str {
+    let mut end = offset.min(text.len());
+    while !text.is_char_boundary(end) {
+        end -= 1;
+    }
+    let start = text[..end].rfind('\n').map_or(0, |k| k + 1);
+    let stop = text[end..].find('\n').map_or(text.len(), |k| end + k);
+    &text[start..stop]
+}
+
+/// The name in a line that looks like a table header, even a malformed
+/// one (`[[triangle]`): brackets, then a letter.
+fn header_like(line: &str) -> Option<&str> {
+    let inner = line.trim().strip_prefix('[')?.trim_start_matches('[');
+    if !inner.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
+        return None;
+    }
+    let end = inner.find([']', ' ', '#']).unwrap_or(inner.len());
+    Some(&inner[..end])
 }
 
 /// The key a line assigns, `key = ...`, if it is one.

@@ -13,7 +13,9 @@ use super::{Frame, SceneFile};
 /// is closed. Errors are messages (a scene error, no display to open).
 pub fn show(file: &SceneFile, scale: u32) -> Result<(), String> {
     if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {
-        return Err("no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset)".into());
+        return Err(
+            "no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset)".into(),
+        );
     }
     let lin = file.render_linear().map_err(|d| d.to_string())?;
     let shown = file.tone(&lin).to_image8().to_rgb();
