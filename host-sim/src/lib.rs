@@ -42,6 +42,7 @@ pub mod gallery;
 pub mod image;
 pub mod png_out;
 pub mod scene;
+pub mod scene_file;
 
 /// The repository README's code blocks, compiled and run as doc tests.
 #[cfg(doctest)]

@@ -4,6 +4,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use softedge_sim::gallery::{write_gallery, GalleryOptions};
+use softedge_sim::png_out::write_png;
+use softedge_sim::scene_file::{self, pnm16, SceneFile};
 
 const USAGE: &str = "\
 softedge-sim: render softedge scenes on a PC
@@ -17,6 +19,21 @@ COMMANDS:
                 modes side by side, Gouraud shading (gray and RGB), and
                 seamless meshes. --scale: magnification (default 4, 1..=16);
                 --band-rows: rows per band (default 8).
+    render SCENE.toml -o OUT.png [--scale N] [--raw OUT.pgm]
+                Render a scene file band by band, run the display's tone
+                stage (its format and γ) and write what the display shows
+                as PNG, upscaled by --scale (default 1, 1..=64, nearest
+                neighbour). --raw: also write the linear 12-bit values
+                before the tone stage as 16-bit Netpbm (P5 gray, P6 RGB).
+    crc SCENE.toml
+                Print `crc <stem> <crc32>`: the CRC-32 of the display's
+                byte stream (its codes, row by row).
+    bits --contrast K --delta D --gamma G
+                Print the levels a display needs (seed 000): N_I (eq. 9),
+                N_U (eq. 10) and m = ln K / ln(1 + D), one per line.
+    window SCENE.toml [--scale N]
+                Show the scene in a window (only with the `window` feature,
+                which needs SDL2).
     help        Print this help.
 
 OPTIONS:
@@ -60,6 +77,10 @@ fn run(args: &[String]) -> Result<(), Failure> {
             Ok(())
         }
         "gallery" => gallery(&args[1..]),
+        "render" => render(&args[1..]),
+        "crc" => crc(&args[1..]),
+        "bits" => bits(&args[1..]),
+        "window" => window(&args[1..]),
         other => Err(Failure::Usage(format!("unknown command `{other}`"))),
     }
 }
@@ -90,6 +111,148 @@ fn gallery(args: &[String]) -> Result<(), Failure> {
         .map_err(|e| Failure::Run(e.to_string()))?;
     println!("{} files in {}", written.len(), dir.display());
     Ok(())
+}
+
+/// Loads a scene file, printing its warnings; errors name file, line and
+/// field.
+fn load_scene(path: &str) -> Result<SceneFile, Failure> {
+    let file =
+        scene_file::load(std::path::Path::new(path)).map_err(|d| Failure::Run(d.to_string()))?;
+    for w in &file.warnings {
+        eprintln!("softedge-sim: warning: {w}");
+    }
+    Ok(file)
+}
+
+/// A scene command's options, each `(name, value)`.
+type Options<'a> = Vec<(&'a str, String)>;
+
+/// The one positional argument (the scene file) and the options of a
+/// scene command, each option with a value.
+fn scene_args<'a>(
+    cmd: &str,
+    args: &'a [String],
+    options: &[&str],
+) -> Result<(String, Options<'a>), Failure> {
+    let mut scene = None;
+    let mut opts = Vec::new();
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        if options.contains(&a.as_str()) {
+            let v = it
+                .next()
+                .cloned()
+                .ok_or_else(|| Failure::Usage(format!("{a} needs a value")))?;
+            opts.push((a.as_str(), v));
+        } else if a.starts_with('-') {
+            return Err(Failure::Usage(format!("unknown {cmd} option `{a}`")));
+        } else if scene.is_none() {
+            scene = Some(a.clone());
+        } else {
+            return Err(Failure::Usage(format!(
+                "{cmd} takes one scene file, not also `{a}`"
+            )));
+        }
+    }
+    let scene = scene.ok_or_else(|| Failure::Usage(format!("{cmd} needs a SCENE.toml")))?;
+    Ok((scene, opts))
+}
+
+fn render(args: &[String]) -> Result<(), Failure> {
+    if args.iter().any(|a| a == "-h" || a == "--help") {
+        print!("{USAGE}");
+        return Ok(());
+    }
+    let (scene, opts) = scene_args("render", args, &["-o", "--out", "--scale", "--raw"])?;
+    let mut out = None;
+    let mut raw = None;
+    let mut scale = 1;
+    for (name, v) in opts {
+        match name {
+            "-o" | "--out" => out = Some(PathBuf::from(v)),
+            "--raw" => raw = Some(PathBuf::from(v)),
+            _ => scale = number(name, &v, 1, 64)? as u32,
+        }
+    }
+    let out = out.ok_or_else(|| Failure::Usage("render needs -o OUT.png".into()))?;
+    let file = load_scene(&scene)?;
+    let lin = file
+        .render_linear()
+        .map_err(|d| Failure::Run(d.to_string()))?;
+    if let Some(raw) = &raw {
+        std::fs::write(raw, pnm16(&lin))
+            .map_err(|e| Failure::Run(format!("cannot write {}: {e}", raw.display())))?;
+        println!("{}", raw.display());
+    }
+    let img = file.tone(&lin).to_image8().upscale(scale);
+    write_png(&out, &img)
+        .map_err(|e| Failure::Run(format!("cannot write {}: {e}", out.display())))?;
+    println!("{}", out.display());
+    Ok(())
+}
+
+fn crc(args: &[String]) -> Result<(), Failure> {
+    let (scene, _) = scene_args("crc", args, &[])?;
+    let file = load_scene(&scene)?;
+    let lin = file
+        .render_linear()
+        .map_err(|d| Failure::Run(d.to_string()))?;
+    println!("crc {} {:08x}", file.stem(), file.tone(&lin).crc32());
+    Ok(())
+}
+
+fn bits(args: &[String]) -> Result<(), Failure> {
+    let (mut k, mut d, mut g) = (None, None, None);
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let slot = match a.as_str() {
+            "--contrast" => &mut k,
+            "--delta" => &mut d,
+            "--gamma" => &mut g,
+            other => return Err(Failure::Usage(format!("unknown bits option `{other}`"))),
+        };
+        let v = it
+            .next()
+            .ok_or_else(|| Failure::Usage(format!("{a} needs a value")))?;
+        let x = v
+            .parse::<f64>()
+            .map_err(|_| Failure::Usage(format!("{a} takes a number, not `{v}`")))?;
+        *slot = Some(x);
+    }
+    let (Some(k), Some(d), Some(g)) = (k, d, g) else {
+        return Err(Failure::Usage(
+            "bits needs --contrast, --delta and --gamma".into(),
+        ));
+    };
+    let levels = softedge::tone::levels(k, d, g).map_err(|_| {
+        Failure::Run(format!(
+            "need contrast > 1, delta > 0 and gamma > 1 (got K = {k}, delta = {d}, gamma = {g})"
+        ))
+    })?;
+    println!("N_I {:.1}", levels.n_i);
+    println!("N_U {:.1}", levels.n_u);
+    println!("m {:.1}", levels.m);
+    Ok(())
+}
+
+#[cfg(feature = "window")]
+fn window(args: &[String]) -> Result<(), Failure> {
+    let (scene, opts) = scene_args("window", args, &["--scale"])?;
+    let mut scale = 4;
+    for (name, v) in opts {
+        scale = number(name, &v, 1, 64)? as u32;
+    }
+    let file = load_scene(&scene)?;
+    scene_file::window::show(&file, scale).map_err(Failure::Run)
+}
+
+#[cfg(not(feature = "window"))]
+fn window(_args: &[String]) -> Result<(), Failure> {
+    Err(Failure::Run(
+        "this softedge-sim was built without the `window` feature; rebuild with \
+         `cargo run -p softedge-sim --features window -- window SCENE.toml` (needs SDL2)"
+            .into(),
+    ))
 }
 
 fn number(name: &str, text: &str, lo: u64, hi: u64) -> Result<u64, Failure> {

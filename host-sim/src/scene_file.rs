@@ -1,0 +1,668 @@
+//! Scene files: a frame described in TOML, checked, and turned into a
+//! [`Scene`] for the band renderer plus the display it is shown on.
+//!
+//! The format is documented in the README ("Scene files"); in short:
+//! `[display]` (size, pixel format, background), `[render]` (anti-aliasing,
+//! pixel model, γ, band height), 2D primitives `[[triangle]]`,
+//! `[[polygon]]`, `[[line]]` in pixel units, and 3D objects `[[object]]`
+//! seen by a `[camera]` and lit by a `[light]`.
+//!
+//! ## Decisions
+//!
+//! - **Order.** Primitives are accumulated in the order they appear in the
+//!   file, across tables: every table is read with its byte span and the
+//!   primitives are sorted by where their table starts. (Accumulation,
+//!   `I_acc += I * S`, is a sum, so the order changes no pixel; it decides
+//!   which primitive an error names first.) An object's triangles come at
+//!   the object's place, in mesh order, after back-face culling.
+//! - **Sub-pixel rounding.** Coordinates are pixels; the edge engine uses
+//!   1/16 px. A coordinate that is not a multiple of 1/16 is rounded to the
+//!   nearest 1/16 (halves away from zero) and a warning names it; the scene
+//!   still renders.
+//! - **Rejected** (an error naming file, line, column and field): unknown
+//!   keys or tables, wrong types, NaN and infinities, coordinates beyond
+//!   `±COORD_LIMIT_PX` (2048 px), colours outside `0..=4095`, a colour
+//!   with the wrong number of channels (1 for gray and binary formats, 3
+//!   for RGB), wrong vertex counts, sizes out of range, and anything core
+//!   rejects when the primitive is drawn (a self-intersecting polygon) or
+//!   the objects projected (a camera whose eye is its target).
+//!
+//! ```
+//! use softedge_sim::scene_file::{parse, DisplayFormat, Frame};
+//! let text = "[display]\nwidth = 8\nheight = 4\nformat = \"gray4\"\n\
+//!             [[polygon]]\npoints = [[0, 0], [8, 0], [8, 2], [0, 2]]\ncolor = [4095]\n";
+//! let file = parse(std::path::Path::new("doc.toml"), text).unwrap();
+//! assert_eq!(file.format, DisplayFormat::Gray4);
+//! let Frame::Gray(scene) = &file.frame else { panic!("a gray scene") };
+//! assert_eq!(scene.primitives.len(), 1);
+//! let lin = file.render_linear().unwrap();
+//! let codes = file.tone(&lin);
+//! assert_eq!(codes.bytes(), [[15u8; 8], [15; 8], [0; 8], [0; 8]].concat());
+//! ```
+
+mod diag;
+mod display;
+mod objects;
+mod raw;
+#[cfg(feature = "window")]
+pub mod window;
+
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+
+use softedge::tone::{Curve, Gamma};
+use softedge::{
+    Line, PixelModel, RenderStyle, SubPoint, Triangle, COORD_LIMIT_PX, LIN_MAX,
+    MAX_POLYGON_VERTICES, SUB_ONE,
+};
+use toml::Spanned;
+
+pub use diag::{Diagnostic, Severity};
+pub use display::{pnm16, DisplayCodes, Linear};
+
+use crate::scene::{PolyColors, Primitive, RenderError, Scene};
+use diag::Source;
+
+/// Largest frame side, pixels (the band buffer's limit).
+pub const MAX_SIDE: i64 = softedge::band::MAX_WIDTH as i64;
+
+/// Pixel models that are planned but not in core yet.
+const FUTURE_MODELS: [&str; 7] = ["bed4", "bed8", "hex7", "hex19", "cone", "gauss", "hamming"];
+
+/// The pixel format of the display a scene is shown on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DisplayFormat {
+    /// 16-bit RGB 5-6-5.
+    Rgb565,
+    /// 24-bit RGB.
+    Rgb888,
+    /// 8-bit gray.
+    Gray8,
+    /// 4-bit gray.
+    Gray4,
+    /// 1 bit per pixel, Floyd–Steinberg dithered in linear light.
+    Binary,
+}
+
+impl DisplayFormat {
+    /// The name used in scene files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Rgb565 => "rgb565",
+            Self::Rgb888 => "rgb888",
+            Self::Gray8 => "gray8",
+            Self::Gray4 => "gray4",
+            Self::Binary => "binary",
+        }
+    }
+
+    /// All formats.
+    pub const ALL: [Self; 5] = [
+        Self::Rgb565,
+        Self::Rgb888,
+        Self::Gray8,
+        Self::Gray4,
+        Self::Binary,
+    ];
+
+    /// Colour channels of the scene's values: 3 for RGB, 1 otherwise.
+    pub fn channels(self) -> usize {
+        match self {
+            Self::Rgb565 | Self::Rgb888 => 3,
+            Self::Gray8 | Self::Gray4 | Self::Binary => 1,
+        }
+    }
+}
+
+/// The scene of a file, with its channel count.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Frame {
+    /// One channel (gray formats, binary).
+    Gray(Scene<1>),
+    /// Three channels (RGB formats).
+    Rgb(Scene<3>),
+}
+
+/// Where a primitive of the scene came from, for error messages.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Origin {
+    /// Its field path, `polygon[2]` or `object[0]`.
+    pub field: String,
+    /// Its table's byte span in the file.
+    pub span: Range<usize>,
+}
+
+/// A checked scene file.
+#[derive(Debug, Clone)]
+pub struct SceneFile {
+    /// The file.
+    pub path: PathBuf,
+    /// The file's text (for locating render errors).
+    text: String,
+    /// The display's pixel format.
+    pub format: DisplayFormat,
+    /// The display's transfer curve (the γ table sends its inverse).
+    pub curve: Curve,
+    /// The frame, ready for [`crate::scene::render`].
+    pub frame: Frame,
+    /// Where each primitive of `frame` came from (same order).
+    pub origins: Vec<Origin>,
+    /// Warnings (coordinates rounded to 1/16 px).
+    pub warnings: Vec<Diagnostic>,
+}
+
+/// Reads and checks a scene file; an unreadable file is a diagnostic
+/// without a line.
+pub fn load(path: &Path) -> Result<SceneFile, Diagnostic> {
+    let text = std::fs::read_to_string(path).map_err(|e| Diagnostic {
+        severity: Severity::Error,
+        path: path.to_path_buf(),
+        line: 0,
+        column: 0,
+        field: String::new(),
+        message: format!("cannot read the scene file: {e}"),
+    })?;
+    parse(path, &text)
+}
+
+/// Checks the scene `text` of the file `path` (used in messages only).
+pub fn parse(path: &Path, text: &str) -> Result<SceneFile, Diagnostic> {
+    let src = Source { path, text };
+    let file: raw::File = toml::from_str(text).map_err(|e| src.toml_error(&e))?;
+    let mut ck = Checker {
+        src: src.clone(),
+        warnings: Vec::new(),
+    };
+    let format = ck.format(&file.display.get_ref().format)?;
+    let (style, curve, band_rows) = ck.render(file.render.as_ref())?;
+    let d = file.display.get_ref();
+    let width = ck.int(&d.width, "display.width", 1, MAX_SIDE)? as u16;
+    let height = ck.int(&d.height, "display.height", 1, MAX_SIDE)? as u16;
+    let (frame, origins) = match format.channels() {
+        1 => {
+            let (s, o) = ck.scene::<1>(&file, width, height, band_rows, style)?;
+            (Frame::Gray(s), o)
+        }
+        _ => {
+            let (s, o) = ck.scene::<3>(&file, width, height, band_rows, style)?;
+            (Frame::Rgb(s), o)
+        }
+    };
+    Ok(SceneFile {
+        path: path.to_path_buf(),
+        text: text.to_string(),
+        format,
+        curve,
+        frame,
+        origins,
+        warnings: ck.warnings,
+    })
+}
+
+impl SceneFile {
+    /// The file name without its extension (for `crc`).
+    pub fn stem(&self) -> String {
+        self.path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default()
+    }
+
+    /// Width and height in pixels.
+    pub fn size(&self) -> (u16, u16) {
+        match &self.frame {
+            Frame::Gray(s) => (s.width, s.height),
+            Frame::Rgb(s) => (s.width, s.height),
+        }
+    }
+
+    /// Renders the frame band by band ([`crate::scene::render`]): the
+    /// linear 12-bit values before the tone stage. A primitive that core
+    /// rejects is reported at its place in the file.
+    pub fn render_linear(&self) -> Result<Linear, Diagnostic> {
+        let out = match &self.frame {
+            Frame::Gray(s) => crate::scene::render(s).map(Linear::Gray),
+            Frame::Rgb(s) => crate::scene::render(s).map(Linear::Rgb),
+        };
+        out.map_err(|e| self.render_error(e))
+    }
+
+    /// The display codes of a rendered frame, through `softedge::tone`.
+    pub fn tone(&self, lin: &Linear) -> DisplayCodes {
+        display::tone(lin, self.format, self.curve)
+    }
+
+    fn render_error(&self, e: RenderError) -> Diagnostic {
+        let src = Source {
+            path: &self.path,
+            text: &self.text,
+        };
+        match e {
+            RenderError::Draw { index, error } => {
+                let origin = self.origins.get(index).cloned().unwrap_or(Origin {
+                    field: format!("primitive #{index}"),
+                    span: 0..0,
+                });
+                let what = match error {
+                    softedge::DrawError::Coord(c) => format!(
+                        "a vertex is outside ±{COORD_LIMIT_PX} px: ({}, {}) in 1/16 px",
+                        c.point.x, c.point.y
+                    ),
+                    softedge::DrawError::TooManyVertices => {
+                        format!("more than {MAX_POLYGON_VERTICES} vertices")
+                    }
+                    softedge::DrawError::ColorCount => {
+                        "per-vertex colours for a different number of vertices".into()
+                    }
+                    softedge::DrawError::SelfIntersecting => {
+                        "the polygon intersects itself (two of its edges touch or cross)".into()
+                    }
+                };
+                src.error(origin.span, origin.field, what)
+            }
+            other => src.error(0..0, "display", other.to_string()),
+        }
+    }
+}
+
+/// The checks, with the source for locating errors and the warnings so far.
+struct Checker<'a> {
+    src: Source<'a>,
+    warnings: Vec<Diagnostic>,
+}
+
+type Checked<T> = Result<T, Diagnostic>;
+
+impl Checker<'_> {
+    fn err<T>(&self, span: Range<usize>, field: &str, message: impl Into<String>) -> Checked<T> {
+        Err(self.src.error(span, field, message))
+    }
+
+    fn int(&self, v: &raw::Int, field: &str, lo: i64, hi: i64) -> Checked<i64> {
+        let x = *v.get_ref();
+        if (lo..=hi).contains(&x) {
+            Ok(x)
+        } else {
+            self.err(v.span(), field, format!("{x} is outside {lo}..={hi}"))
+        }
+    }
+
+    /// A finite number within `lo..=hi`.
+    fn num(&self, v: &raw::Num, field: &str, lo: f64, hi: f64) -> Checked<f64> {
+        let x = *v.get_ref();
+        if !x.is_finite() {
+            return self.err(v.span(), field, format!("{x} is not a finite number"));
+        }
+        if !(lo..=hi).contains(&x) {
+            return self.err(v.span(), field, format!("{x} is outside {lo}..={hi}"));
+        }
+        Ok(x)
+    }
+
+    /// Exactly `N` finite numbers, each within `lo..=hi`.
+    fn nums<const N: usize>(
+        &self,
+        v: &raw::Nums,
+        field: &str,
+        lo: f64,
+        hi: f64,
+    ) -> Checked<[f64; N]> {
+        let list = v.get_ref();
+        if list.len() != N {
+            return self.err(
+                v.span(),
+                field,
+                format!("takes {N} numbers, not {}", list.len()),
+            );
+        }
+        let mut out = [0.0; N];
+        for (k, (o, x)) in out.iter_mut().zip(list).enumerate() {
+            *o = self.num(x, &format!("{field}[{k}]"), lo, hi)?;
+        }
+        Ok(out)
+    }
+
+    /// A point in pixels to 1/16 px: range checked, rounded with a warning.
+    fn point(&mut self, v: &raw::Nums, field: &str) -> Checked<SubPoint> {
+        let lim = f64::from(COORD_LIMIT_PX);
+        let [x, y] = self.nums::<2>(v, field, -lim, lim)?;
+        let sub = |p: f64| (p * f64::from(SUB_ONE)).round();
+        let (sx, sy) = (sub(x), sub(y));
+        if sx != x * f64::from(SUB_ONE) || sy != y * f64::from(SUB_ONE) {
+            let one = f64::from(SUB_ONE);
+            let w = self.src.at(
+                Severity::Warning,
+                v.span(),
+                field,
+                format!(
+                    "[{x}, {y}] is not on the 1/16 px grid; rounded to [{}, {}]",
+                    sx / one,
+                    sy / one
+                ),
+            );
+            self.warnings.push(w);
+        }
+        Ok(SubPoint::new(sx as i32, sy as i32))
+    }
+
+    fn points(&mut self, v: &Spanned<Vec<raw::Nums>>, field: &str) -> Checked<Vec<SubPoint>> {
+        v.get_ref()
+            .iter()
+            .enumerate()
+            .map(|(k, p)| self.point(p, &format!("{field}[{k}]")))
+            .collect()
+    }
+
+    /// A colour of `C` linear 12-bit values.
+    fn color<const C: usize>(&self, v: &raw::Color, field: &str) -> Checked<[u16; C]> {
+        let list = v.get_ref();
+        if list.len() != C {
+            let why = if C == 1 {
+                "this display format has one channel (gray)"
+            } else {
+                "this display format has three channels (R, G, B)"
+            };
+            return self.err(
+                v.span(),
+                field,
+                format!("a colour takes {C} value(s), not {}: {why}", list.len()),
+            );
+        }
+        let mut out = [0u16; C];
+        for (k, (o, c)) in out.iter_mut().zip(list).enumerate() {
+            *o = self.int(c, &format!("{field}[{k}]"), 0, i64::from(LIN_MAX))? as u16;
+        }
+        Ok(out)
+    }
+
+    /// Per-vertex colours (`colors`, `n` of them) or one (`color`).
+    fn vertex_colors<const C: usize>(
+        &self,
+        colors: Option<&raw::Colors>,
+        color: Option<&raw::Color>,
+        n: usize,
+        field: &str,
+        span: Range<usize>,
+    ) -> Checked<PolyColors<C>> {
+        match (colors, color) {
+            (Some(_), Some(c)) => self.err(
+                c.span(),
+                &format!("{field}.color"),
+                "give either `color` (one for all vertices) or `colors` (one per vertex), not both",
+            ),
+            (None, None) => self.err(
+                span,
+                field,
+                "needs `color` (one for all vertices) or `colors` (one per vertex)",
+            ),
+            (None, Some(c)) => Ok(PolyColors::Flat(
+                self.color::<C>(c, &format!("{field}.color"))?,
+            )),
+            (Some(cs), None) => {
+                let list = cs.get_ref();
+                if list.len() != n {
+                    return self.err(
+                        cs.span(),
+                        &format!("{field}.colors"),
+                        format!("{} colours for {n} vertices", list.len()),
+                    );
+                }
+                let cols = list
+                    .iter()
+                    .enumerate()
+                    .map(|(k, c)| self.color::<C>(c, &format!("{field}.colors[{k}]")))
+                    .collect::<Checked<Vec<_>>>()?;
+                Ok(PolyColors::PerVertex(cols))
+            }
+        }
+    }
+
+    fn format(&self, f: &Spanned<String>) -> Checked<DisplayFormat> {
+        match DisplayFormat::ALL.iter().find(|x| x.name() == f.get_ref()) {
+            Some(x) => Ok(*x),
+            None => self.err(
+                f.span(),
+                "display.format",
+                format!(
+                    "unknown format `{}`; one of rgb565, rgb888, gray8, gray4, binary",
+                    f.get_ref()
+                ),
+            ),
+        }
+    }
+
+    /// `[render]`: style, curve, band rows (defaults: anti-aliased box, γ 2.2,
+    /// 16 rows).
+    fn render(&self, r: Option<&Spanned<raw::Render>>) -> Checked<(RenderStyle, Curve, u16)> {
+        let mut style = RenderStyle::default();
+        let mut curve = Curve::GAMMA_2_2;
+        let mut rows = 16u16;
+        let Some(r) = r.map(Spanned::get_ref) else {
+            return Ok((style, curve, rows));
+        };
+        if let Some(a) = &r.antialias {
+            style.antialias = *a.get_ref();
+        }
+        if let Some(m) = &r.pixel_model {
+            let name = m.get_ref().as_str();
+            style.model = match name {
+                "box" => PixelModel::Box,
+                "box-seed" => PixelModel::BoxSeed,
+                future if FUTURE_MODELS.contains(&future) => {
+                    return self.err(
+                        m.span(),
+                        "render.pixel_model",
+                        format!(
+                            "pixel model `{future}` is not implemented yet; use `box` or `box-seed`"
+                        ),
+                    )
+                }
+                other => {
+                    return self.err(
+                        m.span(),
+                        "render.pixel_model",
+                        format!("unknown pixel model `{other}`; one of box, box-seed (bed4, bed8, hex7, hex19, cone, gauss, hamming are planned)"),
+                    )
+                }
+            };
+        }
+        if let Some(g) = &r.gamma {
+            curve = match g.get_ref() {
+                raw::GammaValue::Name(n) if n == "srgb" => Curve::Srgb,
+                raw::GammaValue::Name(n) => {
+                    return self.err(
+                        g.span(),
+                        "render.gamma",
+                        format!("unknown curve `{n}`; a number in 1.0..=5.0 or \"srgb\""),
+                    )
+                }
+                raw::GammaValue::Power(x) => {
+                    let x = *x;
+                    if !x.is_finite() || !(1.0..=5.0).contains(&x) {
+                        return self.err(
+                            g.span(),
+                            "render.gamma",
+                            format!("{x} is not a display exponent in 1.0..=5.0"),
+                        );
+                    }
+                    // γ as a ratio over 1000 (reduced by Gamma::new).
+                    const DEN: u16 = 1000;
+                    let num = (x * f64::from(DEN)).round() as u16;
+                    Curve::Power(Gamma::new(num, DEN).unwrap_or(Gamma::G2_2))
+                }
+            };
+        }
+        if let Some(b) = &r.band_rows {
+            rows = self.int(b, "render.band_rows", 1, MAX_SIDE)? as u16;
+        }
+        Ok((style, curve, rows))
+    }
+
+    /// Everything drawn, in file order.
+    fn scene<const C: usize>(
+        &mut self,
+        file: &raw::File,
+        width: u16,
+        height: u16,
+        band_rows: u16,
+        style: RenderStyle,
+    ) -> Checked<(Scene<C>, Vec<Origin>)> {
+        let background = match &file.display.get_ref().background {
+            Some(b) => self.color::<C>(b, "display.background")?,
+            None => [0; C],
+        };
+        let mut items: Vec<(Origin, Vec<Primitive<C>>)> = Vec::new();
+        for (k, t) in file.triangle.iter().enumerate() {
+            let field = format!("triangle[{k}]");
+            let tr = t.get_ref();
+            let pts = self.points(&tr.points, &format!("{field}.points"))?;
+            let [a, b, c] = pts[..] else {
+                return self.err(
+                    tr.points.span(),
+                    &format!("{field}.points"),
+                    format!("a triangle has 3 points, not {}", pts.len()),
+                );
+            };
+            let colors = match self.vertex_colors::<C>(
+                tr.colors.as_ref(),
+                tr.color.as_ref(),
+                3,
+                &field,
+                t.span(),
+            )? {
+                PolyColors::Flat(c) => [c; 3],
+                PolyColors::PerVertex(cs) => [cs[0], cs[1], cs[2]],
+            };
+            let p = Primitive::Triangle(Triangle::new([a, b, c], colors));
+            items.push((
+                Origin {
+                    field,
+                    span: t.span(),
+                },
+                vec![p],
+            ));
+        }
+        for (k, p) in file.polygon.iter().enumerate() {
+            let field = format!("polygon[{k}]");
+            let pr = p.get_ref();
+            let pts = self.points(&pr.points, &format!("{field}.points"))?;
+            if !(3..=MAX_POLYGON_VERTICES).contains(&pts.len()) {
+                return self.err(
+                    pr.points.span(),
+                    &format!("{field}.points"),
+                    format!(
+                        "a polygon has 3..={MAX_POLYGON_VERTICES} points, not {}",
+                        pts.len()
+                    ),
+                );
+            }
+            let colors = self.vertex_colors::<C>(
+                pr.colors.as_ref(),
+                pr.color.as_ref(),
+                pts.len(),
+                &field,
+                p.span(),
+            )?;
+            let prim = Primitive::Polygon {
+                vertices: pts,
+                colors,
+            };
+            items.push((
+                Origin {
+                    field,
+                    span: p.span(),
+                },
+                vec![prim],
+            ));
+        }
+        for (k, l) in file.line.iter().enumerate() {
+            let field = format!("line[{k}]");
+            let lr = l.get_ref();
+            let from = self.point(&lr.from, &format!("{field}.from"))?;
+            let to = self.point(&lr.to, &format!("{field}.to"))?;
+            let colors = match self.vertex_colors::<C>(
+                lr.colors.as_ref(),
+                lr.color.as_ref(),
+                2,
+                &field,
+                l.span(),
+            )? {
+                PolyColors::Flat(c) => [c; 2],
+                PolyColors::PerVertex(cs) => [cs[0], cs[1]],
+            };
+            let p = Primitive::Line(Line::new(from, to, colors));
+            items.push((
+                Origin {
+                    field,
+                    span: l.span(),
+                },
+                vec![p],
+            ));
+        }
+        items.extend(objects::objects::<C>(self, file, width, height)?);
+        // File order across tables (a stable sort keeps ties as read).
+        items.sort_by_key(|(o, _)| o.span.start);
+        let mut scene = Scene::new(width, height, background);
+        scene.band_rows = band_rows;
+        scene.style = style;
+        let mut origins = Vec::new();
+        for (origin, prims) in items {
+            for p in prims {
+                scene.primitives.push(p);
+                origins.push(origin.clone());
+            }
+        }
+        Ok((scene, origins))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse_str(text: &str) -> Checked<SceneFile> {
+        parse(Path::new("t.toml"), text)
+    }
+
+    const HEAD: &str = "[display]\nwidth = 16\nheight = 8\nformat = \"gray8\"\n";
+
+    #[test]
+    fn primitives_keep_file_order_across_tables() {
+        let text = format!(
+            "{HEAD}[[line]]\nfrom = [0, 0]\nto = [4, 4]\ncolor = [1]\n\
+             [[triangle]]\npoints = [[0, 0], [4, 0], [0, 4]]\ncolor = [2]\n\
+             [[line]]\nfrom = [1, 0]\nto = [5, 4]\ncolor = [3]\n"
+        );
+        let f = parse_str(&text).unwrap();
+        let fields: Vec<_> = f.origins.iter().map(|o| o.field.as_str()).collect();
+        assert_eq!(fields, ["line[0]", "triangle[0]", "line[1]"]);
+    }
+
+    #[test]
+    fn off_grid_coordinates_are_rounded_with_a_warning() {
+        let text =
+            format!("{HEAD}[[triangle]]\npoints = [[0.1, 0], [4, 0], [0, 4]]\ncolor = [2]\n");
+        let f = parse_str(&text).unwrap();
+        assert_eq!(f.warnings.len(), 1);
+        assert_eq!(f.warnings[0].field, "triangle[0].points[0]");
+        assert_eq!(f.warnings[0].line, 6);
+        let Frame::Gray(s) = &f.frame else { panic!() };
+        let Primitive::Triangle(t) = &s.primitives[0] else {
+            panic!()
+        };
+        assert_eq!(t.vertices[0], SubPoint::new(2, 0)); // 0.1 * 16 = 1.6 -> 2
+    }
+
+    #[test]
+    fn gamma_accepts_numbers_and_srgb() {
+        for (g, want) in [
+            ("2.2", Curve::GAMMA_2_2),
+            ("2.4", Curve::GAMMA_2_4),
+            ("\"srgb\"", Curve::Srgb),
+            ("1", Curve::Power(Gamma::new(1, 1).unwrap())),
+        ] {
+            let f = parse_str(&format!("{HEAD}[render]\ngamma = {g}\n")).unwrap();
+            assert_eq!(f.curve, want, "{g}");
+        }
+    }
+}
