@@ -87,6 +87,64 @@ fn fill_scene<const C: usize>() -> (Vec<Triangle<C>>, Vec<Line<C>>) {
     )
 }
 
+/// The 3D benchmark: a lit torus of 24 x 12 segments (576 triangles, 288
+/// vertices), seen along its axis tilted by 20°, orthographic, RGB,
+/// projected again in every band (what a firmware without a triangle store
+/// does). Returns a checksum.
+#[inline(never)]
+fn render_torus() -> u64 {
+    use softedge::scene3d::{
+        project_mesh, Angle, Camera, Light, Mesh, Shape, Transform, Vec3, ViewVertex, I16F16,
+    };
+    let shape = Shape::Torus {
+        major: I16F16::from_num(3),
+        minor: I16F16::from_num(1),
+        segments: 24,
+        tube_segments: 12,
+    };
+    let Ok(mesh) = Mesh::<288, 576>::new(&shape) else {
+        return 0;
+    };
+    let cam = Camera::orthographic(
+        Vec3::from_int(0, 0, 20),
+        Vec3::ZERO,
+        Vec3::from_int(0, 1, 0),
+        I16F16::from_num(28),
+    );
+    let Ok(view) = cam.view(W, H) else {
+        return 0;
+    };
+    let light = Light::new(Vec3::from_int(-1, -2, 3), [500; 3], [3500; 3]);
+    let tilt = Transform::rotation_x(Angle::from_degrees(20));
+    let mut scratch = [ViewVertex::<3>::EMPTY; 288];
+    let mut acc = vec![0i32; BandBuffer::<3>::acc_len(W, BAND_ROWS)];
+    let mut cover = vec![0i32; BandBuffer::<3>::cover_len(W, BAND_ROWS)];
+    let mut row = vec![[0u16; 3]; usize::from(W)];
+    let mut sum = 0u64;
+    for band in Bands::new(W, H, BAND_ROWS) {
+        let Ok(mut buf) = BandBuffer::<3>::new(&mut acc, &mut cover, band) else {
+            continue;
+        };
+        buf.clear([0; 3]);
+        let _ = project_mesh(
+            mesh.as_ref(),
+            &tilt,
+            [3000, 2000, 800],
+            &view,
+            &light,
+            &mut scratch,
+            |t| {
+                let _ = t.draw(&mut buf, &RenderStyle::default());
+            },
+        );
+        for y in band.y0..band.y0 + i32::from(band.rows) {
+            buf.resolve_row(y, &mut row);
+            sum += row.iter().flatten().map(|&v| u64::from(v)).sum::<u64>();
+        }
+    }
+    sum
+}
+
 /// Renders a scene once, band by band; returns a checksum so nothing is
 /// optimised away.
 #[inline(never)]
@@ -214,6 +272,10 @@ fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     if args.first().map(String::as_str) == Some("run") {
         let fill = args.get(2).map(String::as_str) == Some("fill");
+        if args.get(2).map(String::as_str) == Some("torus") {
+            println!("checksum {}", render_torus());
+            return;
+        }
         let sum = match args.get(1).map(String::as_str) {
             Some("3") => render_frame::<3>(fill),
             _ => render_frame::<1>(fill),
@@ -269,4 +331,39 @@ fn main() {
         );
         println!("  fill frame      {:>10} instructions = {:.1} per frame pixel (incl. clear and resolve)", n[3], n[3] as f64 / px);
     }
+    let torus = [
+        callgrind("3", "torus", Some("*render_torus*")),
+        callgrind("3", "torus", Some("*scene3d*project*")),
+        callgrind("3", "torus", Some("*walk_edge*")),
+        callgrind("3", "torus", Some("*raster*fill*")),
+    ];
+    let mut n = [0u64; 4];
+    for (slot, r) in n.iter_mut().zip(torus) {
+        match r {
+            Ok(v) => *slot = v,
+            Err(e) => {
+                eprintln!("bench: {e}");
+                std::process::exit(1);
+            }
+        }
+    }
+    let bands = u64::from(H.div_ceil(BAND_ROWS));
+    println!("3D: lit torus 24x12 segments (576 triangles, 288 vertices), RGB, {W}x{H}, bands of {BAND_ROWS} (projected once per band, {bands} bands):");
+    println!(
+        "  whole frame     {:>10} instructions = {:.1} per frame pixel",
+        n[0],
+        n[0] as f64 / (f64::from(W) * f64::from(H))
+    );
+    // `project` calls the drawing back for every triangle: subtract it.
+    let geometry = n[1].saturating_sub(n[3]);
+    println!(
+        "  geometry (transform, light, project, cull) {:>10} instructions = {:.0} per band = {:.0} per vertex and band (incl. its share of triangle setup)",
+        geometry,
+        geometry as f64 / bands as f64,
+        geometry as f64 / (288.0 * bands as f64)
+    );
+    println!(
+        "  drawing (edge walk {}, spans, setup) {:>10} instructions",
+        n[2], n[3]
+    );
 }
