@@ -474,7 +474,7 @@ pub const SPHERE3D: Scene = Scene {
     width: 64,
     height: 48,
     channels: 3,
-    band_rows: 8,
+    band_rows: 4,
     style: RenderStyle {
         antialias: true,
         model: PixelModel::Box,

@@ -8,6 +8,7 @@
 //! insns <scene> <n>                     instructions per scene (SysTick, see [`insns`])
 //! insns_per_tick <num>/<den>            the calibration behind those counts
 //! stack_bytes <n>                       deepest stack use seen (see [`stack`])
+//! stack_margin_bytes <n>                 untouched RAM left; under 512 fails the run
 //! ```
 //!
 //! then ends QEMU with exit status 0, or 1 when a scene failed. Output is
@@ -70,7 +71,12 @@ pub fn run(acc: &mut [i32], cover: &mut [i32], counter: &insns::Counter) -> ! {
         .text("stack_bytes ")
         .dec(stack::used_bytes() as u64)
         .print();
-    exit(ok)
+    let margin = stack::margin_bytes();
+    Line::new().text("stack_margin_bytes ").dec(margin as u64).print();
+    if margin < stack::MIN_MARGIN_BYTES {
+        Line::new().text("error stack too close to the statics").print();
+    }
+    exit(ok && margin >= stack::MIN_MARGIN_BYTES)
 }
 
 /// Ends QEMU: status 0 when `ok`, 1 otherwise.

@@ -43,6 +43,17 @@ pub fn paint() {
     }
 }
 
+/// Bytes of painted RAM the stack never reached (since [`paint`]): the
+/// margin left between the deepest stack and the statics.
+pub fn margin_bytes() -> usize {
+    let (low, top) = bounds();
+    (top as usize - low as usize).saturating_sub(used_bytes())
+}
+
+/// A run whose stack came closer than this to the statics fails: the stack
+/// may already have overwritten them (a 16 KiB Cortex-M0 leaves little room).
+pub const MIN_MARGIN_BYTES: usize = 512;
+
 /// Bytes of stack used so far (since [`paint`]).
 pub fn used_bytes() -> usize {
     let (low, top) = bounds();
