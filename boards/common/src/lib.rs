@@ -72,9 +72,14 @@ pub fn run(acc: &mut [i32], cover: &mut [i32], counter: &insns::Counter) -> ! {
         .dec(stack::used_bytes() as u64)
         .print();
     let margin = stack::margin_bytes();
-    Line::new().text("stack_margin_bytes ").dec(margin as u64).print();
+    Line::new()
+        .text("stack_margin_bytes ")
+        .dec(margin as u64)
+        .print();
     if margin < stack::MIN_MARGIN_BYTES {
-        Line::new().text("error stack too close to the statics").print();
+        Line::new()
+            .text("error stack too close to the statics")
+            .print();
     }
     exit(ok && margin >= stack::MIN_MARGIN_BYTES)
 }
