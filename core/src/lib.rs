@@ -60,6 +60,7 @@ pub mod edge;
 #[cfg(feature = "embedded-graphics")]
 pub mod eg;
 pub mod geom;
+pub mod pixel_model;
 pub mod postfilter;
 pub mod raster;
 pub mod scene3d;

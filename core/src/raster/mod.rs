@@ -32,6 +32,7 @@ mod simple;
 use crate::band::BandBuffer;
 use crate::edge::{walk_edge, walk_edge_aliased, AreaMode};
 use crate::geom::{area2, CoordError, SubPoint};
+use crate::pixel_model::walk_bed_of_nails;
 use crate::shade::Plane;
 use crate::SUB_BITS;
 
@@ -50,6 +51,11 @@ pub enum PixelModel {
     /// Square pixel, the single formula of seed 001 (error up to `k/8` of a
     /// pixel for an edge of slope `k <= 1`; see [`AreaMode`]).
     BoxSeed,
+    /// The 4x4 bed-of-nails filter of seed 000 (2x2 samples per pixel, tent
+    /// weights on a 2x2-pixel base; [`pixel_model`](crate::pixel_model)).
+    BedOfNails4,
+    /// The 8x8 bed-of-nails filter of seed 000 (4x4 samples per pixel).
+    BedOfNails8,
 }
 
 /// How primitives are drawn.
@@ -353,6 +359,15 @@ fn fill<const C: usize>(
         y_max = y_max.max(p.y);
     }
     let band_end = info.y0 + i32::from(info.rows);
+    // Bed-of-nails filters reach half a pixel beyond the pixel.
+    let samples = match style.model {
+        PixelModel::BedOfNails4 if style.antialias => 2,
+        PixelModel::BedOfNails8 if style.antialias => 4,
+        _ => 0,
+    };
+    let margin = if samples > 0 { crate::SUB_ONE } else { 0 };
+    let (x_min, x_max) = (x_min.saturating_sub(margin), x_max.saturating_add(margin));
+    let (y_min, y_max) = (y_min.saturating_sub(margin), y_max.saturating_add(margin));
     let rows = (y_min >> SUB_BITS).max(info.y0)..((y_max >> SUB_BITS) + 1).min(band_end);
     // Wholly above, below, right or left of the band: nothing to add (left
     // of it, the edges' covers would cancel at column 0).
@@ -363,16 +378,18 @@ fn fill<const C: usize>(
     // counter-clockwise (negative area) outline.
     let orientation = if area2(v) > 0 { -1 } else { 1 };
     let mode = match style.model {
-        PixelModel::Box => AreaMode::Exact,
         PixelModel::BoxSeed => AreaMode::SeedFormula,
+        _ => AreaMode::Exact,
     };
     let n = v.len();
     for k in 0..n {
         let (p0, p1) = (v[k], v[(k + 1) % n]);
-        if style.antialias {
-            walk_edge(p0, p1, orientation, plane, mode, rows.clone(), band);
-        } else {
+        if !style.antialias {
             walk_edge_aliased::<C, _>(p0, p1, orientation, rows.clone(), band);
+        } else if samples > 0 {
+            walk_bed_of_nails(band, p0, p1, orientation, samples, rows.clone());
+        } else {
+            walk_edge(p0, p1, orientation, plane, mode, rows.clone(), band);
         }
     }
     band.sweep(rows.start, rows.end, plane);
