@@ -9,11 +9,12 @@ const W: u16 = 40;
 const H: u16 = 40;
 const FULL: i64 = 4095 * 4096;
 
-const MODELS: [PixelModel; 4] = [
+const MODELS: [PixelModel; 5] = [
     PixelModel::Box,
     PixelModel::BoxSeed,
     PixelModel::BedOfNails4,
     PixelModel::BedOfNails8,
+    PixelModel::Hex7,
 ];
 
 fn style(model: PixelModel) -> RenderStyle {
@@ -46,8 +47,12 @@ fn energy(f: &[i32]) -> i64 {
 }
 
 #[test]
-fn bed_of_nails_small_square_has_exactly_one_pixel_of_energy_at_every_offset() {
-    for model in [PixelModel::BedOfNails4, PixelModel::BedOfNails8] {
+fn sampled_models_give_a_small_square_exactly_one_pixel_of_energy_at_every_offset() {
+    for model in [
+        PixelModel::BedOfNails4,
+        PixelModel::BedOfNails8,
+        PixelModel::Hex7,
+    ] {
         for dy in 0..16 {
             for dx in 0..16 {
                 let p = |u: i32, v: i32| SubPoint::new(20 * 16 + dx + u, 20 * 16 + dy + v);
@@ -70,8 +75,9 @@ fn bed_of_nails_small_square_has_exactly_one_pixel_of_energy_at_every_offset() {
 /// filters sample points: their weights are equal energy (every *sample*
 /// carries the same total), but how many samples fall inside a thin oblique
 /// strip changes with its position, by about its perimeter times the sample
-/// spacing — measured 9.8 % with 2x2 samples per pixel and 1.3 % with 4x4,
-/// asserted below with a little room. (The unit square, whose sample count
+/// spacing — measured 9.8 % with 2x2 samples per pixel, 1.3 % with 4x4 and
+/// 15.6 % for the hexagonal 7-point lattice (4 points per pixel in a brick
+/// pattern), asserted below with a little room. (The unit square, whose sample count
 /// never changes, is exact: see the test above.)
 #[test]
 fn short_line_energy_over_sub_pixel_offsets_within_each_models_bound() {
@@ -80,6 +86,7 @@ fn short_line_energy_over_sub_pixel_offsets_within_each_models_bound() {
         (PixelModel::BoxSeed, 0.005),
         (PixelModel::BedOfNails8, 0.015),
         (PixelModel::BedOfNails4, 0.11),
+        (PixelModel::Hex7, 0.17),
     ] {
         let mut e = vec![];
         for dy in 0..16 {
@@ -172,8 +179,12 @@ fn coverage_grows_monotonically_as_an_edge_sweeps_across_a_pixel() {
 }
 
 #[test]
-fn bed_of_nails_interior_is_full_and_far_pixels_untouched() {
-    for model in [PixelModel::BedOfNails4, PixelModel::BedOfNails8] {
+fn sampled_models_fill_the_interior_and_leave_far_pixels_untouched() {
+    for model in [
+        PixelModel::BedOfNails4,
+        PixelModel::BedOfNails8,
+        PixelModel::Hex7,
+    ] {
         let v = [
             SubPoint::new(83, 85),
             SubPoint::new(500, 90),

@@ -32,6 +32,13 @@
 //! bases lie wholly right of `c`, and partial weights (a table of the tent's
 //! cumulative sums) for the one or two pixels whose base `c` cuts.
 //!
+//! ## The hexagonal pixel (seed 003)
+//!
+//! Seven points per pixel, the centre weighing twice a ring point (the cone
+//! model's centre-to-ring ratio), shared with the neighbours exactly as the
+//! seed lays them out, so they form a lattice in which every point carries
+//! the same total weight: equal energy again, exactly. See `hex.rs`.
+//!
 //! Per sample row and edge: one add/compare step of the walk and a few
 //! table look-ups and adds. The coverage of an edge pixel then changes from
 //! one pixel to the next, so the span sweep sets up `I * coverage` with one
@@ -39,8 +46,11 @@
 //! along the walk, which a sampled model is not).
 
 mod bed_of_nails;
+mod hex;
 
 pub(crate) use bed_of_nails::walk_bed_of_nails;
+pub use hex::hex7_offsets;
+pub(crate) use hex::walk_hex7;
 
 /// Tent weights of a bed-of-nails filter with `n` samples per pixel and axis
 /// (`2n` over the 2-pixel base): `w_k = 2n - |2k + 1 - 2n|`.

@@ -32,7 +32,7 @@ mod simple;
 use crate::band::BandBuffer;
 use crate::edge::{walk_edge, walk_edge_aliased, AreaMode};
 use crate::geom::{area2, CoordError, SubPoint};
-use crate::pixel_model::walk_bed_of_nails;
+use crate::pixel_model::{walk_bed_of_nails, walk_hex7};
 use crate::shade::Plane;
 use crate::SUB_BITS;
 
@@ -56,6 +56,9 @@ pub enum PixelModel {
     BedOfNails4,
     /// The 8x8 bed-of-nails filter of seed 000 (4x4 samples per pixel).
     BedOfNails8,
+    /// The hexagonal pixel of seed 003: 7 points, centre weight 2/8, ring
+    /// points 1/8, shared with the neighbours.
+    Hex7,
 }
 
 /// How primitives are drawn.
@@ -365,7 +368,12 @@ fn fill<const C: usize>(
         PixelModel::BedOfNails8 if style.antialias => 4,
         _ => 0,
     };
-    let margin = if samples > 0 { crate::SUB_ONE } else { 0 };
+    let hex = style.antialias && style.model == PixelModel::Hex7;
+    let margin = if samples > 0 || hex {
+        crate::SUB_ONE
+    } else {
+        0
+    };
     let (x_min, x_max) = (x_min.saturating_sub(margin), x_max.saturating_add(margin));
     let (y_min, y_max) = (y_min.saturating_sub(margin), y_max.saturating_add(margin));
     let rows = (y_min >> SUB_BITS).max(info.y0)..((y_max >> SUB_BITS) + 1).min(band_end);
@@ -388,6 +396,8 @@ fn fill<const C: usize>(
             walk_edge_aliased::<C, _>(p0, p1, orientation, rows.clone(), band);
         } else if samples > 0 {
             walk_bed_of_nails(band, p0, p1, orientation, samples, rows.clone());
+        } else if hex {
+            walk_hex7(band, p0, p1, orientation, rows.clone());
         } else {
             walk_edge(p0, p1, orientation, plane, mode, rows.clone(), band);
         }

@@ -1,0 +1,152 @@
+//! The 7-point hexagonal pixel of seed 003, sampled on its brick lattice.
+//!
+//! Pixel `(i, j)` with centre `(x, y) = (i + 1/2, j + 1/2)` has the seed's
+//! seven points `T7 = (x, y)` (weight 2/8) and `T1..T6 = (x ∓ 1/4, y ± 1/2),
+//! (x ± 1/2, y)` (1/8 each; the seed's cone model with `V1 : V7` giving the
+//! centre twice a ring point). Neighbours share ring points: `T3` of a pixel
+//! is `T6` of the pixel to its right, its `T1`, `T2` are `T5`, `T4` of the
+//! pixel below. So the points of all pixels form a lattice of rows half a
+//! pixel apart, points half a pixel apart along a row:
+//!
+//! - row A (`y = j + 1/2`): at `x = i + 1/2` (pixel `i`'s centre, weight 2)
+//!   and `x = i + 1` (shared by pixels `i` and `i + 1`, 1 each);
+//! - row B (`y = j + 1`): at `x = i + 1/4` and `x = i + 3/4` (shared by the
+//!   pixels `(i, j)` and `(i, j + 1)`, 1 each).
+//!
+//! Every lattice point carries 2/8 in all, and a unit square holds exactly
+//! four of them wherever it lies: equal energy, exactly (eq. 4 of seed 000).
+//! The points are sampled with the aliased walk (top-left rule, so shared
+//! edges stay seamless) on a grid twice as fine, shifted a quarter pixel so
+//! its sample centres fall on the lattice: one walk for the A rows, one for
+//! the B rows.
+
+use core::ops::Range;
+
+/// The seed-003 evaluation function at the seven points of a pixel, for an
+/// edge with increments `(dx, dy)`, as offsets from its value at the centre
+/// `T7`: `OF(x, y) = y dx - x dy`, taken at `T1..T6` and scaled by 4 so the
+/// quarter-pixel offsets are exact: `[T1, T2, T3, T4, T5, T6, T7]` =
+/// `[2dx + dy, 2dx - dy, -2dy, -(2dx + dy), -(2dx - dy), 2dy, 0]` (the
+/// seed's `(2Δx ± Δy)/4` and `Δy/2`, times 4). Shifts and adds only;
+/// opposite points (`T1`/`T4`, `T2`/`T5`, `T3`/`T6`) have opposite offsets.
+/// (SPEC §6 lists `T4` and `T5` the other way round; evaluating `OF` at the
+/// points as it places them gives the order here, which the example checks.)
+///
+/// ```
+/// use softedge::pixel_model::hex7_offsets;
+/// let (dx, dy) = (5, 3);
+/// let of = |x4: i64, y4: i64| y4 * dx - x4 * dy; // 4 * OF at (x4/4, y4/4)
+/// let pts = [(-1, 2), (1, 2), (2, 0), (1, -2), (-1, -2), (-2, 0), (0, 0)];
+/// let offsets = hex7_offsets(dx, dy);
+/// for (k, (x4, y4)) in pts.into_iter().enumerate() {
+///     assert_eq!(of(x4, y4), offsets[k]);
+/// }
+/// ```
+pub fn hex7_offsets(dx: i64, dy: i64) -> [i64; 7] {
+    let (a, b) = ((dx << 1) + dy, (dx << 1) - dy);
+    [a, b, -(dy << 1), -a, -b, dy << 1, 0]
+}
+
+use crate::arith::div_ceil;
+use crate::band::BandBuffer;
+use crate::edge::{walk_edge_aliased, EdgeSink};
+use crate::{SubPoint, COVER_ONE, SUB_ONE};
+
+/// Sum of a pixel's point weights: 2 + 6 * 1.
+const TOTAL: i32 = 8;
+
+/// Walks edge `p0 -> p1` of a primitive for the hexagonal 7-point model,
+/// writing coverage changes for pixel `rows` into the band.
+pub(crate) fn walk_hex7<const C: usize>(
+    band: &mut BandBuffer<'_, C>,
+    p0: SubPoint,
+    p1: SubPoint,
+    orientation: i32,
+    rows: Range<i32>,
+) {
+    let quarter = SUB_ONE / 4;
+    // Fine grid: 1/2 px; its sample centres are at f/2 + 1/4. Shifting the
+    // geometry up by 1/4 px puts fine row g on y = g/2 + 1/2: even g are A
+    // rows (j = g/2), odd g are B rows (between j = (g-1)/2 and j + 1).
+    // A rows sample x = f/2 (shift right by 1/4), B rows x = f/2 + 1/4.
+    let fine = |p: SubPoint, dx: i32| {
+        SubPoint::new(
+            p.x.saturating_add(dx).saturating_mul(2),
+            p.y.saturating_sub(quarter).saturating_mul(2),
+        )
+    };
+    let fine_rows = rows.start.saturating_mul(2) - 1..rows.end.saturating_mul(2) + 1;
+    for row_a in [true, false] {
+        let dx = if row_a { quarter } else { 0 };
+        let mut sink = HexRows {
+            band: &mut *band,
+            row_a,
+            rows: rows.clone(),
+        };
+        walk_edge_aliased::<C, _>(
+            fine(p0, dx),
+            fine(p1, dx),
+            orientation,
+            fine_rows.clone(),
+            &mut sink,
+        );
+    }
+}
+
+/// Turns one row type's cover changes into pixel coverage.
+struct HexRows<'a, 'b, const C: usize> {
+    band: &'a mut BandBuffer<'b, C>,
+    row_a: bool,
+    rows: Range<i32>,
+}
+
+impl<const C: usize> HexRows<'_, '_, C> {
+    /// Cover change `unit * full` from pixel `p_full`, and the cut pixels'
+    /// partial weights (`partial[t]` for the pixel whose points start `t`
+    /// fine columns left of `c`).
+    fn spread(&mut self, j: i32, c: i64, unit: i32, full: i32, partial: &[(i64, i32)]) {
+        if !self.rows.contains(&j) {
+            return;
+        }
+        let p_full = div_ceil(c, 2);
+        self.band.add_cover(p_full as i32, j, unit * full);
+        for &(p_off, w) in partial {
+            let p = (p_full - p_off) as i32;
+            let v = unit * w;
+            self.band.add_cover(p, j, v);
+            self.band.add_cover(p + 1, j, -v);
+        }
+    }
+}
+
+impl<const C: usize> EdgeSink<C> for HexRows<'_, '_, C> {
+    fn cell(&mut self, _: i32, _: i32, _: i32, _: &[i32; C]) {}
+
+    fn cover(&mut self, c: i32, g: i32, delta: i32) {
+        let is_a = g.rem_euclid(2) == 0;
+        if is_a != self.row_a {
+            return;
+        }
+        let unit = delta.signum() * (COVER_ONE / TOTAL);
+        let c = i64::from(c);
+        if is_a {
+            // Pixel i's A points: fine columns 2i (weight 1), 2i+1 (2),
+            // 2i+2 (1). Samples at or right of c are covered.
+            let j = g.div_euclid(2);
+            let odd = c.rem_euclid(2) == 1;
+            // c = 2m: pixels >= m full; pixel m-1 keeps its point 2m (1).
+            // c = 2m+1: pixels >= m+1 full; pixel m keeps 2m+1, 2m+2 (3).
+            let partial: &[(i64, i32)] = if odd { &[(1, 3)] } else { &[(1, 1)] };
+            self.spread(j, c, unit, 4, partial);
+        } else {
+            // Pixel i's B points in this row: fine columns 2i and 2i+1
+            // (1 each), for the pixel rows above and below the B row.
+            let j_above = (g - 1).div_euclid(2);
+            let odd = c.rem_euclid(2) == 1;
+            let partial: &[(i64, i32)] = if odd { &[(1, 1)] } else { &[] };
+            for j in [j_above, j_above + 1] {
+                self.spread(j, c, unit, 2, partial);
+            }
+        }
+    }
+}
