@@ -594,7 +594,8 @@ const TEXT: [u8; 3] = [235, 235, 235];
 const TEXT_SCALE: u32 = 3;
 const MARGIN: u32 = 12;
 
-/// Lays out rows of panels under a title, each panel under its label.
+/// Lays out rows of panels under a title, each panel under its label
+/// (drawn smaller when it would run into the next panel's).
 fn compose(title: &str, rows: &[Vec<Panel>]) -> Image8 {
     let line = GLYPH_H * TEXT_SCALE;
     let label_h = line + MARGIN / 2;
@@ -623,11 +624,18 @@ fn compose(title: &str, rows: &[Vec<Panel>]) -> Image8 {
     for row in rows {
         let mut x = MARGIN;
         for p in row {
+            // A label wider than its panel (small scales) is drawn smaller,
+            // down to 1, rather than over the next panel's label.
+            let room = p.image.width() + MARGIN;
+            let ts = (1..=TEXT_SCALE)
+                .rev()
+                .find(|&s| text_width(&p.label, s) <= room)
+                .unwrap_or(1);
             draw_text(
                 &mut sheet,
                 i64::from(x),
-                i64::from(y),
-                TEXT_SCALE,
+                i64::from(y + (TEXT_SCALE - ts) * GLYPH_H),
+                ts,
                 &p.label,
                 &TEXT,
             );
