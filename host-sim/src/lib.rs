@@ -10,10 +10,14 @@
 //!   rows, cleared, every primitive drawn into it, rows resolved, next band.
 //!   The result is a [`LinImage`](image::LinImage) of linear 12-bit values,
 //!   the bits a display driver would receive before its tone stage.
+//!   [`render_lightness_filtered`](scene::render_lightness_filtered) adds
+//!   seed 002's `L*` post-filter, each band rendered with one halo row
+//!   above and below.
 //! - [`image`]: linear and 8-bit images, the linear-to-sRGB conversion for
 //!   viewing on a PC, nearest-neighbour upscaling and simple compositing.
 //! - [`font`]: a 3x5 bitmap font for panel labels.
-//! - [`png_out`]: PNG encoding with the `png` crate.
+//! - [`png_out`]: PNG encoding with the `png` crate (fast, or compact for
+//!   the committed golden images) and reading back.
 //! - [`gallery`]: the demo images of `softedge-sim gallery`.
 //!
 //! ```

@@ -24,7 +24,8 @@ COMMANDS:
                 stage (its format and γ) and write what the display shows
                 as PNG, upscaled by --scale (default 1, 1..=64, nearest
                 neighbour). --raw: also write the linear 12-bit values
-                before the tone stage as 16-bit Netpbm (P5 gray, P6 RGB).
+                before the tone stage (after the scene's lightness filter,
+                if on) as 16-bit Netpbm (P5 gray, P6 RGB).
     crc SCENE.toml
                 Print `crc <stem> <crc32>`: the CRC-32 of the display's
                 byte stream (its codes, row by row).

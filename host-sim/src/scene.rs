@@ -6,9 +6,18 @@
 //! background, draws every primitive in order and resolves the band's rows
 //! into the image. Nothing here rounds or converts: the image holds exactly
 //! the linear 12-bit values [`BandBuffer::resolve_row`] gave.
+//!
+//! [`render_lightness_filtered`] adds the post-filter of seed 002
+//! ([`LightnessFilter`]) between accumulation and tone, the way firmware
+//! runs it: each band is rendered one row taller at each end (the halo rows
+//! the filter's 4-neighbour Laplacian needs), resolved into a scratch of
+//! `band_rows + 2` rows and filtered into the band's output rows. Every
+//! band height gives the frame [`LightnessFilter::filter_frame`] gives for
+//! the unfiltered render; the cost is two extra rendered rows per band.
 
 use std::fmt;
 
+use softedge::postfilter::{FilterError, FilterStats, LightnessFilter, LightnessPixel};
 use softedge::{
     Band, BandBuffer, BandError, Bands, DrawError, Line, Polygon, PolygonColors, RenderStyle,
     SubPoint, Triangle,
@@ -50,8 +59,9 @@ impl<const C: usize> Primitive<C> {
         }
     }
 
-    /// Draws this primitive into one band.
-    fn draw(&self, buf: &mut BandBuffer<'_, C>, style: &RenderStyle) -> Result<(), DrawError> {
+    /// Draws this primitive into one band (every band gets every
+    /// primitive; core clips it to the band).
+    pub fn draw(&self, buf: &mut BandBuffer<'_, C>, style: &RenderStyle) -> Result<(), DrawError> {
         match self {
             Self::Triangle(t) => t.draw(buf, style),
             Self::Line(l) => l.draw(buf, style),
@@ -135,6 +145,8 @@ pub enum RenderError {
         /// Why.
         error: DrawError,
     },
+    /// The post-filter rejected the frame size or its buffers.
+    Filter(FilterError),
 }
 
 impl fmt::Display for RenderError {
@@ -146,6 +158,7 @@ impl fmt::Display for RenderError {
                 band.y0, band.width, band.rows
             ),
             Self::Draw { index, error } => write!(f, "primitive #{index} rejected: {error:?}"),
+            Self::Filter(error) => write!(f, "lightness filter rejected the frame: {error:?}"),
         }
     }
 }
@@ -167,17 +180,102 @@ pub fn render<const C: usize>(scene: &Scene<C>) -> Result<LinImage<C>, RenderErr
     for band in Bands::new(w, h, rows) {
         let mut buf = BandBuffer::<C>::new(&mut acc, &mut cover, band)
             .map_err(|error| RenderError::Band { band, error })?;
-        buf.clear(scene.background);
-        for (index, p) in scene.primitives.iter().enumerate() {
-            p.draw(&mut buf, &scene.style)
-                .map_err(|error| RenderError::Draw { index, error })?;
-        }
+        draw_band(scene, &mut buf)?;
         for y in band.y0..band.y0 + i32::from(band.rows) {
             let n = buf.resolve_row(y, &mut row);
             img.set_row(y as u32, &row[..n]);
         }
     }
     Ok(img)
+}
+
+/// Clears `buf` to the scene's background and draws every primitive.
+fn draw_band<const C: usize>(
+    scene: &Scene<C>,
+    buf: &mut BandBuffer<'_, C>,
+) -> Result<(), RenderError> {
+    buf.clear(scene.background);
+    for (index, p) in scene.primitives.iter().enumerate() {
+        p.draw(buf, &scene.style)
+            .map_err(|error| RenderError::Draw { index, error })?;
+    }
+    Ok(())
+}
+
+/// Renders `scene` band by band and runs the lightness filter of seed 002
+/// on every band ([`LightnessFilter::filter_band`]): the linear 12-bit
+/// frame the tone stage receives when the filter is on, and what the
+/// filter did (pixels changed, pixels clamped to the RGB gamut).
+///
+/// Each band of `band_rows` output rows is rendered as a band of
+/// `band_rows + 2` rows starting one row higher (the halo); the halo rows
+/// are rendered again by the neighbouring bands. The result does not depend
+/// on `band_rows`.
+///
+/// ```
+/// use softedge::{RenderStyle, SubPoint, Triangle};
+/// use softedge_sim::scene::{render, render_lightness_filtered, Primitive, Scene};
+///
+/// // A light gray (L* 80, k = 0.15) with a lighter triangle on it.
+/// let mut scene = Scene::<1>::new(12, 9, [2300]);
+/// scene.primitives.push(Primitive::Triangle(Triangle::flat(
+///     [SubPoint::from_px(1, 1), SubPoint::new(170, 30), SubPoint::new(40, 130)],
+///     [3400],
+/// )));
+/// let (filtered, stats) = render_lightness_filtered(&scene).unwrap();
+/// assert!(stats.changed > 0);
+/// assert_ne!(filtered, render(&scene).unwrap());
+/// for rows in [1, 2, 9] {
+///     assert_eq!(render_lightness_filtered(&scene.with_band_rows(rows)).unwrap().0, filtered);
+/// }
+/// ```
+pub fn render_lightness_filtered<const C: usize>(
+    scene: &Scene<C>,
+) -> Result<(LinImage<C>, FilterStats), RenderError>
+where
+    [u16; C]: LightnessPixel,
+{
+    let (w, h) = (scene.width, scene.height);
+    let rows = scene.band_rows.max(1);
+    let halo_rows = rows.saturating_add(2);
+    let filter = LightnessFilter::new(w, h).map_err(RenderError::Filter)?;
+    let mut img = LinImage::new(u32::from(w), u32::from(h));
+    let mut acc = vec![0i32; BandBuffer::<C>::acc_len(w, halo_rows)];
+    let mut cover = vec![0i32; BandBuffer::<C>::cover_len(w, halo_rows)];
+    // The band and its halo rows, resolved: the filter's input.
+    let mut input = vec![[0u16; C]; usize::from(w) * usize::from(halo_rows)];
+    let mut scratch = vec![0u16; LightnessFilter::scratch_len(w)];
+    let mut out_row = vec![[0u16; C]; usize::from(w)];
+    let mut stats = FilterStats::default();
+    for band in Bands::new(w, h, rows) {
+        let halo = Band {
+            y0: band.y0 - 1,
+            rows: band.rows.saturating_add(2),
+            ..band
+        };
+        let mut buf = BandBuffer::<C>::new(&mut acc, &mut cover, halo)
+            .map_err(|error| RenderError::Band { band: halo, error })?;
+        draw_band(scene, &mut buf)?;
+        let n_in = usize::from(w) * usize::from(halo.rows);
+        for (r, row) in input[..n_in].chunks_exact_mut(usize::from(w)).enumerate() {
+            // Rows outside the frame are resolved too; the filter never
+            // reads them (it repeats the edge row).
+            buf.resolve_row(halo.y0 + r as i32, row);
+        }
+        let s = filter
+            .filter_band(
+                band.y0,
+                band.rows,
+                &input[..n_in],
+                &mut scratch,
+                &mut out_row,
+                |y, row| img.set_row(y as u32, row),
+            )
+            .map_err(RenderError::Filter)?;
+        stats.changed += s.changed;
+        stats.clamped += s.clamped;
+    }
+    Ok((img, stats))
 }
 
 #[cfg(test)]
@@ -240,6 +338,63 @@ mod tests {
             }
         );
         assert!(err.to_string().contains("#2"));
+    }
+
+    /// Light, thin, colourful shapes: most pixels have `L*` where table
+    /// 4.1 gives `k > 0`.
+    fn pale_scene() -> Scene<3> {
+        let mut s = Scene::new(33, 23, [2600, 2500, 2300]);
+        s.primitives.push(Primitive::Triangle(Triangle::new(
+            [
+                SubPoint::new(2 * 16 + 3, 16 + 9),
+                SubPoint::new(31 * 16 + 7, 6 * 16 + 2),
+                SubPoint::new(9 * 16 + 11, 21 * 16 + 5),
+            ],
+            [[4095, 3600, 900], [900, 3900, 3900], [3800, 1500, 3800]],
+        )));
+        s.primitives.push(Primitive::Line(Line::new(
+            SubPoint::new(-30, 22 * 16),
+            SubPoint::new(34 * 16, 16 + 3),
+            [[4095, 1200, 1200], [1200, 4095, 1200]],
+        )));
+        s
+    }
+
+    #[test]
+    fn lightness_filter_bands_equal_the_full_frame_filter() {
+        let s = pale_scene();
+        let plain = render(&s).unwrap();
+        let (w, h) = (s.width, s.height);
+        let input: Vec<[u16; 3]> = plain.pixels().collect();
+        let mut want = vec![[0u16; 3]; input.len()];
+        let mut scratch = vec![0u16; LightnessFilter::scratch_len(w)];
+        let want_stats = LightnessFilter::new(w, h)
+            .unwrap()
+            .filter_frame(&input, &mut want, &mut scratch)
+            .unwrap();
+        assert!(want_stats.changed > 50, "{want_stats:?}");
+        for rows in [1, 2, 7, 16, 22, 23, 100] {
+            let (img, stats) = render_lightness_filtered(&s.with_band_rows(rows)).unwrap();
+            let got: Vec<[u16; 3]> = img.pixels().collect();
+            assert!(got == want, "band rows {rows}");
+            assert_eq!(stats, want_stats, "band rows {rows}");
+        }
+        assert_ne!(plain.pixels().collect::<Vec<_>>(), want);
+    }
+
+    #[test]
+    fn lightness_filter_on_one_row_and_one_column_frames() {
+        for (w, h) in [(1, 1), (1, 9), (9, 1)] {
+            let mut s = Scene::<1>::new(w, h, [2400]);
+            s.primitives.push(Primitive::Line(Line::new(
+                SubPoint::new(0, 8),
+                SubPoint::new(i32::from(w) * 16, i32::from(h) * 16 - 8),
+                [[4095], [4095]],
+            )));
+            let (a, _) = render_lightness_filtered(&s.with_band_rows(1)).unwrap();
+            let (b, _) = render_lightness_filtered(&s.with_band_rows(h)).unwrap();
+            assert_eq!(a, b, "{w}x{h}");
+        }
     }
 
     #[test]

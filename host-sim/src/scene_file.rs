@@ -3,7 +3,7 @@
 //!
 //! The format is documented in the README ("Scene files"); in short:
 //! `[display]` (size, pixel format, background), `[render]` (anti-aliasing,
-//! pixel model, γ, band height), 2D primitives `[[triangle]]`,
+//! pixel model, γ, band height, the lightness post-filter), 2D primitives `[[triangle]]`,
 //! `[[polygon]]`, `[[line]]` in pixel units, and 3D objects `[[object]]`
 //! seen by a `[camera]` and lit by a `[light]`.
 //!
@@ -143,6 +143,9 @@ pub struct SceneFile {
     pub format: DisplayFormat,
     /// The display's transfer curve (the γ table sends its inverse).
     pub curve: Curve,
+    /// `[render] lightness_filter`: run the CIELAB L* filter of seed 002
+    /// between accumulation and tone.
+    pub lightness_filter: bool,
     /// The frame, ready for [`crate::scene::render`].
     pub frame: Frame,
     /// Where each primitive of `frame` came from (same order).
@@ -175,6 +178,11 @@ pub fn parse(path: &Path, text: &str) -> Result<SceneFile, Diagnostic> {
     };
     let format = ck.format(&file.display.get_ref().format)?;
     let (style, curve, band_rows) = ck.render(file.render.as_ref())?;
+    let lightness_filter = file
+        .render
+        .as_ref()
+        .and_then(|r| r.get_ref().lightness_filter.as_ref())
+        .is_some_and(|f| *f.get_ref());
     let d = file.display.get_ref();
     let width = ck.int(&d.width, "display.width", 1, MAX_SIDE)? as u16;
     let height = ck.int(&d.height, "display.height", 1, MAX_SIDE)? as u16;
@@ -193,6 +201,7 @@ pub fn parse(path: &Path, text: &str) -> Result<SceneFile, Diagnostic> {
         text: text.to_string(),
         format,
         curve,
+        lightness_filter,
         frame,
         origins,
         warnings: ck.warnings,
@@ -217,12 +226,17 @@ impl SceneFile {
     }
 
     /// Renders the frame band by band ([`crate::scene::render`]): the
-    /// linear 12-bit values before the tone stage. A primitive that core
-    /// rejects is reported at its place in the file.
+    /// linear 12-bit values the tone stage receives. With
+    /// [`lightness_filter`](Self::lightness_filter) on, that is the output
+    /// of the filter ([`crate::scene::render_lightness_filtered`]). A
+    /// primitive that core rejects is reported at its place in the file.
     pub fn render_linear(&self) -> Result<Linear, Diagnostic> {
-        let out = match &self.frame {
-            Frame::Gray(s) => crate::scene::render(s).map(Linear::Gray),
-            Frame::Rgb(s) => crate::scene::render(s).map(Linear::Rgb),
+        use crate::scene::{render, render_lightness_filtered as filtered};
+        let out = match (&self.frame, self.lightness_filter) {
+            (Frame::Gray(s), false) => render(s).map(Linear::Gray),
+            (Frame::Rgb(s), false) => render(s).map(Linear::Rgb),
+            (Frame::Gray(s), true) => filtered(s).map(|(img, _)| Linear::Gray(img)),
+            (Frame::Rgb(s), true) => filtered(s).map(|(img, _)| Linear::Rgb(img)),
         };
         out.map_err(|e| self.render_error(e))
     }
@@ -651,6 +665,45 @@ mod tests {
             panic!()
         };
         assert_eq!(t.vertices[0], SubPoint::new(2, 0)); // 0.1 * 16 = 1.6 -> 2
+    }
+
+    /// A pale RGB scene with the lightness filter on, in bands of `rows`.
+    fn filtered_scene(rows: u16, antialias: bool) -> SceneFile {
+        let text = format!(
+            "[display]\nwidth = 37\nheight = 29\nformat = \"rgb888\"\nbackground = [2600, 2450, 2200]\n\
+             [render]\nlightness_filter = true\nband_rows = {rows}\nantialias = {}\n\
+             [[triangle]]\npoints = [[2.25, 1.5], [35.75, 9.0], [8.5, 27.25]]\n\
+             colors = [[4095, 3500, 800], [700, 3900, 3900], [3900, 1400, 3900]]\n\
+             [[line]]\nfrom = [0.5, 28.0]\nto = [36.5, 0.75]\ncolors = [[4095, 1000, 1000], [1000, 4095, 1000]]\n\
+             [[polygon]]\npoints = [[20, 18], [34, 16], [30, 27]]\ncolor = [4095, 4095, 1200]\n",
+            antialias
+        );
+        parse_str(&text).unwrap()
+    }
+
+    #[test]
+    fn lightness_filter_output_is_the_same_for_every_band_height() {
+        // 29 is the full height.
+        for antialias in [true, false] {
+            let full = filtered_scene(29, antialias).render_linear().unwrap();
+            for rows in [1, 7, 16] {
+                let f = filtered_scene(rows, antialias);
+                assert!(f.lightness_filter);
+                assert!(
+                    f.render_linear().unwrap() == full,
+                    "band rows {rows}, antialias {antialias}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn lightness_filter_is_off_by_default_and_changes_the_frame_when_on() {
+        let on = filtered_scene(16, true);
+        let mut off = on.clone();
+        off.lightness_filter = false;
+        assert!(!parse_str(HEAD).unwrap().lightness_filter);
+        assert_ne!(on.render_linear().unwrap(), off.render_linear().unwrap());
     }
 
     #[test]

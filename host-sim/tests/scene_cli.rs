@@ -3,6 +3,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+use softedge::postfilter::LightnessFilter;
 use softedge_sim::scene_file::{load, Linear};
 
 fn sim(args: &[&str]) -> Output {
@@ -141,6 +142,64 @@ fn raw_is_16_bit_netpbm_of_the_linear_values() {
     let header = b"P6\n96 64\n4095\n";
     assert_eq!(&bytes[..header.len()], header);
     assert_eq!(bytes.len() - header.len(), 96 * 64 * 6);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn raw_with_the_lightness_filter_is_the_filtered_frame() {
+    let dir = temp_dir("filter");
+    let scene = dir.join("pale.toml");
+    std::fs::write(
+        &scene,
+        "[display]\nwidth = 24\nheight = 19\nformat = \"gray8\"\nbackground = [2500]\n\
+         [render]\nlightness_filter = true\nband_rows = 5\n\
+         [[triangle]]\npoints = [[1.5, 2.25], [22.0, 6.5], [6.0, 17.75]]\ncolor = [3900]\n\
+         [[line]]\nfrom = [0, 18]\nto = [24, 1]\ncolor = [1500]\n",
+    )
+    .unwrap();
+    let (png_path, raw) = (dir.join("p.png"), dir.join("p.pgm"));
+    let run = sim(&[
+        "render",
+        scene.to_str().unwrap(),
+        "-o",
+        png_path.to_str().unwrap(),
+        "--raw",
+        raw.to_str().unwrap(),
+    ]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let bytes = std::fs::read(&raw).unwrap();
+    let header = b"P5\n24 19\n4095\n";
+    assert_eq!(&bytes[..header.len()], header);
+    let values: Vec<u16> = bytes[header.len()..]
+        .chunks_exact(2)
+        .map(|b| u16::from_be_bytes([b[0], b[1]]))
+        .collect();
+    // The same frame rendered without the filter, then filtered whole.
+    let mut file = load(&scene).unwrap();
+    assert!(file.lightness_filter);
+    file.lightness_filter = false;
+    let Linear::Gray(plain) = file.render_linear().unwrap() else {
+        panic!("a gray scene");
+    };
+    let plain: Vec<[u16; 1]> = plain.pixels().collect();
+    let mut want = vec![[0u16]; plain.len()];
+    let mut scratch = vec![0u16; LightnessFilter::scratch_len(24)];
+    let stats = LightnessFilter::new(24, 19)
+        .unwrap()
+        .filter_frame(&plain, &mut want, &mut scratch)
+        .unwrap();
+    assert!(stats.changed > 0);
+    let want: Vec<u16> = want.iter().map(|[v]| *v).collect();
+    assert_eq!(values, want);
+    assert_ne!(values, plain.iter().map(|[v]| *v).collect::<Vec<_>>());
+    // The PNG is the tone stage of the filtered frame.
+    file.lightness_filter = true;
+    let codes = file.tone(&file.render_linear().unwrap());
+    assert_eq!(decode_png(&png_path).1, codes.bytes());
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

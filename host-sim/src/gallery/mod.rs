@@ -11,6 +11,7 @@
 //! | `07-oled-1bit_reference-vs-aliased-vs-bayer-vs-floyd-steinberg.png` | a 128x64 SSD1306 frame rendered page by page: the anti-aliased linear frame in gray, aliased 1-bit, Bayer 8x8 and Floyd–Steinberg dithered (module `oled`) |
 //! | `08-flicker_chart.png` | summed linear intensity and perceived brightness (with and without γ correction) of a 1x1 px square and two short lines over 16x16 sub-pixel offsets, each twice: 0.88-1.12 and 0-1.2 (module `flicker`) |
 //! | `09-objects-3d_lod-low-vs-high.png` | sphere, torus, cone, cylinder, box and a composite, lit and anti-aliased, at a low and a high level of detail (module `objects`) |
+//! | `10-lightness-filter_plain-vs-lstar-vs-rgb-blur.png` | light colourful frames (thin shapes aliased and anti-aliased, a dithered 3-bit gradient, fine Gouraud texture): plain, through seed 002's L* filter, through a 3x3 RGB box blur, and maps of the filter's L* change and of the a*/b* shift of filter and blur; the measured shifts are printed (module `lightness`) |
 //!
 //! Every panel is rendered band by band ([`render`]), converted to sRGB by
 //! [`lin12_to_srgb8`](crate::image::lin12_to_srgb8) (image 06 goes through
@@ -33,6 +34,7 @@ use crate::scene::{render, PolyColors, Primitive, RenderError, Scene};
 mod display;
 mod flicker;
 mod gamma;
+mod lightness;
 mod objects;
 mod oled;
 
@@ -130,7 +132,7 @@ impl std::error::Error for GalleryError {
 }
 
 /// Number of files [`write_gallery`] writes.
-pub const GALLERY_FILES: usize = 9;
+pub const GALLERY_FILES: usize = 10;
 
 /// Renders the gallery into `dir` (created if missing). `log` receives one
 /// progress line per image and one `wrote PATH (WxH)` line per file.
@@ -323,6 +325,17 @@ pub fn write_gallery(
     let sheet = objects_sheet(scale, log)?;
     save("09-objects-3d_lod-low-vs-high.png", &sheet, log)?;
 
+    // (f) Post-filter.
+    log(&format!(
+        "[10/{n}] lightness filter: plain | L* filter | RGB 3x3 blur | a*b* shifts"
+    ));
+    let sheet = lightness_sheet(opts.band_rows, scale, log)?;
+    save(
+        "10-lightness-filter_plain-vs-lstar-vs-rgb-blur.png",
+        &sheet,
+        log,
+    )?;
+
     Ok(written)
 }
 
@@ -477,6 +490,73 @@ fn objects_sheet(scale: u32, log: &mut dyn FnMut(&str)) -> Result<Image8, Galler
     ))
 }
 
+/// Image 10: seed 002's L* filter beside a plain RGB blur, magnified 1.5
+/// times the gallery scale; prints the measured a*/b* shifts.
+fn lightness_sheet(
+    band_rows: u16,
+    scale: u32,
+    log: &mut dyn FnMut(&str),
+) -> Result<Image8, GalleryError> {
+    let mag = (scale * 3 / 2).max(1);
+    let frames = lightness::comparisons(band_rows).map_err(|source| GalleryError::Render {
+        image: "lightness filter",
+        source,
+    })?;
+    let (mut worst_filter, mut worst_in_gamut, mut worst_blur) = (0.0f64, 0.0f64, 0.0f64);
+    let mut rows = Vec::new();
+    for c in &frames {
+        let (f, g, b) = (c.filter_shift, c.filter_shift_in_gamut, c.blur_shift);
+        log(&format!(
+            "lightness, {}: L* filter max |da*| {:.2}, |db*| {:.2} ({} px changed, {} clamped to the gamut; \
+             in gamut |da*| {:.2}, |db*| {:.2}); RGB 3x3 blur max |da*| {:.1}, |db*| {:.1}",
+            c.name.to_lowercase(),
+            f.a,
+            f.b,
+            c.stats.changed,
+            c.stats.clamped,
+            g.a,
+            g.b,
+            b.a,
+            b.b
+        ));
+        worst_filter = worst_filter.max(f.a.max(f.b));
+        worst_in_gamut = worst_in_gamut.max(g.a.max(g.b));
+        worst_blur = worst_blur.max(b.a.max(b.b));
+        let map = |after: &LinImage<3>, what| lightness::change_map(&c.plain, after, what);
+        rows.push(vec![
+            Panel::new(c.name, c.plain.to_srgb8(), mag),
+            Panel::new(
+                &format!("L*: DA* {:.2} DB* {:.2}", f.a, f.b),
+                c.filtered.to_srgb8(),
+                mag,
+            ),
+            Panel::new(
+                &format!("BLUR: DA* {:.0} DB* {:.0}", b.a, b.b),
+                c.blurred.to_srgb8(),
+                mag,
+            ),
+            Panel::new(
+                "L*: DL*",
+                map(&c.filtered, lightness::Change::Lightness),
+                mag,
+            ),
+            Panel::new("L*: DAB", map(&c.filtered, lightness::Change::Colour), mag),
+            Panel::new("BLUR: DAB", map(&c.blurred, lightness::Change::Colour), mag),
+        ]);
+    }
+    log(&format!(
+        "lightness, all frames: max a*/b* shift {worst_filter:.2} with the L* filter \
+         ({worst_in_gamut:.2} where no channel was clamped), {worst_blur:.1} with the RGB 3x3 blur"
+    ));
+    Ok(compose(
+        &format!(
+            "PLAIN / SEED-002 L* FILTER / RGB 3X3 BOX BLUR. CHANGE MAPS: DL*, DAB = SQRT(DA*2+DB*2), WHITE = {}",
+            lightness::SHIFT_WHITE
+        ),
+        &rows,
+    ))
+}
+
 /// A relative deviation as a signed percentage: two decimals below 1 %,
 /// one above.
 fn pct(v: f64) -> String {
@@ -514,7 +594,8 @@ const TEXT: [u8; 3] = [235, 235, 235];
 const TEXT_SCALE: u32 = 3;
 const MARGIN: u32 = 12;
 
-/// Lays out rows of panels under a title, each panel under its label.
+/// Lays out rows of panels under a title, each panel under its label
+/// (drawn smaller when it would run into the next panel's).
 fn compose(title: &str, rows: &[Vec<Panel>]) -> Image8 {
     let line = GLYPH_H * TEXT_SCALE;
     let label_h = line + MARGIN / 2;
@@ -543,11 +624,18 @@ fn compose(title: &str, rows: &[Vec<Panel>]) -> Image8 {
     for row in rows {
         let mut x = MARGIN;
         for p in row {
+            // A label wider than its panel (small scales) is drawn smaller,
+            // down to 1, rather than over the next panel's label.
+            let room = p.image.width() + MARGIN;
+            let ts = (1..=TEXT_SCALE)
+                .rev()
+                .find(|&s| text_width(&p.label, s) <= room)
+                .unwrap_or(1);
             draw_text(
                 &mut sheet,
                 i64::from(x),
-                i64::from(y),
-                TEXT_SCALE,
+                i64::from(y + (TEXT_SCALE - ts) * GLYPH_H),
+                ts,
                 &p.label,
                 &TEXT,
             );
@@ -853,7 +941,13 @@ mod tests {
             .collect();
         names.dedup();
         assert_eq!(names.len(), GALLERY_FILES, "{names:?}");
-        for prefix in ["06-gamma", "07-oled-1bit", "08-flicker", "09-objects-3d"] {
+        for prefix in [
+            "06-gamma",
+            "07-oled-1bit",
+            "08-flicker",
+            "09-objects-3d",
+            "10-lightness-filter",
+        ] {
             assert!(names.iter().any(|n| n.starts_with(prefix)), "{prefix}");
         }
         // The flicker numbers are printed, one line per object.
@@ -861,6 +955,17 @@ mod tests {
             lines.iter().filter(|l| l.starts_with("flicker, ")).count(),
             3
         );
+        // The a*/b* shifts: one line per frame and the summary.
+        assert_eq!(
+            lines
+                .iter()
+                .filter(|l| l.starts_with("lightness, ") && l.contains("|db*|"))
+                .count(),
+            4
+        );
+        assert!(lines
+            .iter()
+            .any(|l| l.starts_with("lightness, all frames: max a*/b* shift")));
         for w in &written {
             let meta = std::fs::metadata(&w.path).unwrap();
             assert!(meta.len() > 0, "{} is empty", w.path.display());

@@ -87,6 +87,7 @@ pub struct Render {
     pub pixel_model: Option<Spanned<String>>,
     pub gamma: Option<Spanned<GammaValue>>,
     pub band_rows: Option<Int>,
+    pub lightness_filter: Option<Spanned<bool>>,
 }
 
 /// `[[triangle]]`.

@@ -1,0 +1,230 @@
+//! softedge's embedded-graphics glue (`softedge::eg::Renderer`) drawing a
+//! scene file into a display type from another crate: the simulator's
+//! `SimulatorDisplay`, wrapped in [`BandsOnly`], a `DrawTarget` that
+//! accepts whole bands through `fill_contiguous` and panics on anything
+//! else: per-pixel writes (`draw_iter`), solid fills, clears, and writes
+//! outside the display. It has no way to read pixels back, as a write-only
+//! SPI display has none.
+//!
+//! The display's pixels must equal what the host renderer shows for the
+//! same scene (`SceneFile::render_linear`, then its tone stage), for the
+//! scene's band height and for others.
+
+use std::path::{Path, PathBuf};
+
+use embedded_graphics::pixelcolor::{Gray8, PixelColor, Rgb565};
+use embedded_graphics::prelude::{DrawTarget, IntoStorage, OriginDimensions, Point, Size};
+use embedded_graphics::primitives::Rectangle;
+use embedded_graphics::Pixel;
+use embedded_graphics_simulator::SimulatorDisplay;
+use softedge::eg::Renderer;
+use softedge::tone::format::{Gray8Format, Rgb565Format, ToneFormat};
+use softedge::BandBuffer;
+use softedge_sim::scene::Scene;
+use softedge_sim::scene_file::{self, DisplayFormat, Frame, SceneFile};
+
+/// A display that takes whole bands only: every `fill_contiguous` must be
+/// a full-width rectangle inside the display, directly below the previous
+/// one, with exactly one colour per pixel.
+struct BandsOnly<D> {
+    inner: D,
+    /// The rectangles received, in order.
+    bands: Vec<Rectangle>,
+}
+
+impl<D: OriginDimensions> BandsOnly<D> {
+    fn new(inner: D) -> Self {
+        Self {
+            inner,
+            bands: Vec::new(),
+        }
+    }
+
+    fn next_row(&self) -> i32 {
+        self.bands
+            .last()
+            .map_or(0, |r| r.top_left.y + r.size.height as i32)
+    }
+}
+
+impl<D: OriginDimensions> OriginDimensions for BandsOnly<D> {
+    fn size(&self) -> Size {
+        self.inner.size()
+    }
+}
+
+impl<D: DrawTarget + OriginDimensions> DrawTarget for BandsOnly<D> {
+    type Color = D::Color;
+    type Error = D::Error;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<Self::Color>>>(
+        &mut self,
+        _: I,
+    ) -> Result<(), D::Error> {
+        panic!("draw_iter: softedge must send whole bands through fill_contiguous");
+    }
+
+    fn fill_solid(&mut self, area: &Rectangle, _: Self::Color) -> Result<(), D::Error> {
+        panic!("fill_solid over {area:?}: softedge must send whole bands through fill_contiguous");
+    }
+
+    fn clear(&mut self, _: Self::Color) -> Result<(), D::Error> {
+        panic!("clear: softedge must send whole bands through fill_contiguous");
+    }
+
+    fn fill_contiguous<I: IntoIterator<Item = Self::Color>>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+    ) -> Result<(), D::Error> {
+        let size = self.inner.size();
+        let bottom = area.top_left.y + area.size.height as i32;
+        assert!(
+            area.top_left.y >= 0 && bottom <= size.height as i32,
+            "{area:?} is outside the display ({size:?})"
+        );
+        assert_eq!(area.top_left.x, 0, "{area:?}: a band starts at column 0");
+        assert_eq!(
+            area.size.width, size.width,
+            "{area:?}: a band is full width"
+        );
+        assert!(area.size.height > 0, "{area:?}: an empty band");
+        assert_eq!(
+            area.top_left.y,
+            self.next_row(),
+            "{area:?}: bands come top to bottom, each once"
+        );
+        let colors: Vec<Self::Color> = colors.into_iter().collect();
+        assert_eq!(
+            colors.len(),
+            (area.size.width * area.size.height) as usize,
+            "{area:?}: one colour per pixel"
+        );
+        self.bands.push(*area);
+        self.inner.fill_contiguous(area, colors)
+    }
+}
+
+fn example(name: &str) -> SceneFile {
+    let path: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../examples/scenes")
+        .join(name);
+    scene_file::load(&path).unwrap_or_else(|d| panic!("{d}"))
+}
+
+/// Renders `scene` into a `w x h` simulator display through
+/// `softedge::eg::Renderer` in bands of `band_rows`, colours from
+/// `format`; returns the display and the bands it received.
+fn render_to_display<const C: usize, F>(
+    scene: &Scene<C>,
+    band_rows: u16,
+    format: &F,
+) -> (SimulatorDisplay<F::Color>, Vec<Rectangle>)
+where
+    F: ToneFormat<C>,
+    F::Color: PixelColor + Default,
+{
+    let (w, h) = (scene.width, scene.height);
+    let mut acc = vec![0i32; BandBuffer::<C>::acc_len(w, band_rows)];
+    let mut cover = vec![0i32; BandBuffer::<C>::cover_len(w, band_rows)];
+    let display = SimulatorDisplay::with_default_color(
+        Size::new(u32::from(w), u32::from(h)),
+        F::Color::default(),
+    );
+    let mut target = BandsOnly::new(display);
+    Renderer::<C>::new(&mut acc, &mut cover, w, h, band_rows)
+        .render(
+            &mut target,
+            scene.background,
+            |band| {
+                scene
+                    .primitives
+                    .iter()
+                    .try_for_each(|p| p.draw(band, &scene.style))
+            },
+            |px| format.color(px),
+        )
+        .unwrap();
+    (target.inner, target.bands)
+}
+
+/// Checks the bands: `ceil(h / rows)` full-width rectangles covering the
+/// frame top to bottom (BandsOnly checked each as it came).
+fn assert_whole_bands(bands: &[Rectangle], w: u16, h: u16, rows: u16) {
+    assert_eq!(bands.len(), usize::from(h.div_ceil(rows)), "rows {rows}");
+    let covered: u32 = bands.iter().map(|r| r.size.height).sum();
+    assert_eq!(covered, u32::from(h));
+    assert!(bands.iter().all(|r| r.size.width == u32::from(w)));
+}
+
+/// The display's codes, row by row.
+fn display_codes<C>(display: &SimulatorDisplay<C>) -> Vec<u16>
+where
+    C: PixelColor + IntoStorage,
+    C::Storage: Into<u16>,
+{
+    let size = display.size();
+    (0..size.height as i32)
+        .flat_map(|y| (0..size.width as i32).map(move |x| Point::new(x, y)))
+        .map(|p| display.get_pixel(p).into_storage().into())
+        .collect()
+}
+
+#[test]
+fn rgb565_simulator_display_receives_whole_bands_equal_to_the_host_render() {
+    let file = example("gouraud_rgb.toml");
+    assert_eq!(file.format, DisplayFormat::Rgb565);
+    let Frame::Rgb(scene) = &file.frame else {
+        panic!("an RGB scene");
+    };
+    let want = file.tone(&file.render_linear().unwrap()).codes;
+    let format = Rgb565Format::new(file.curve);
+    let (w, h) = (scene.width, scene.height);
+    for rows in [scene.band_rows, 1, 7, h] {
+        let (display, bands): (SimulatorDisplay<Rgb565>, _) =
+            render_to_display(scene, rows, &format);
+        assert_whole_bands(&bands, w, h, rows);
+        assert!(display_codes(&display) == want, "band rows {rows}");
+    }
+}
+
+#[test]
+fn gray8_simulator_display_receives_whole_bands_equal_to_the_host_render() {
+    let file = example("quickstart.toml");
+    assert_eq!(file.format, DisplayFormat::Gray8);
+    let Frame::Gray(scene) = &file.frame else {
+        panic!("a gray scene");
+    };
+    let want = file.tone(&file.render_linear().unwrap()).codes;
+    assert!(want.iter().any(|&c| c != want[0]), "something drawn");
+    let format = Gray8Format::new(file.curve);
+    let (w, h) = (scene.width, scene.height);
+    for rows in [scene.band_rows, 5, h] {
+        let (display, bands): (SimulatorDisplay<Gray8>, _) =
+            render_to_display(scene, rows, &format);
+        assert_whole_bands(&bands, w, h, rows);
+        assert!(display_codes(&display) == want, "band rows {rows}");
+    }
+}
+
+#[test]
+#[should_panic(expected = "draw_iter")]
+fn bands_only_refuses_per_pixel_writes() {
+    let mut t = BandsOnly::new(SimulatorDisplay::<Gray8>::new(Size::new(4, 4)));
+    let _ = t.draw_iter([Pixel(Point::new(1, 1), Gray8::new(9))]);
+}
+
+#[test]
+#[should_panic(expected = "outside the display")]
+fn bands_only_refuses_writes_outside_the_display() {
+    // A renderer for a frame taller than the display writes below it.
+    let mut acc = vec![0i32; BandBuffer::<1>::acc_len(4, 4)];
+    let mut cover = vec![0i32; BandBuffer::<1>::cover_len(4, 4)];
+    let mut t = BandsOnly::new(SimulatorDisplay::<Gray8>::new(Size::new(4, 4)));
+    let _ = Renderer::<1>::new(&mut acc, &mut cover, 4, 6, 4).render(
+        &mut t,
+        [0],
+        |_| Ok(()),
+        |[v]| Gray8::new((v >> 4) as u8),
+    );
+}
