@@ -122,8 +122,14 @@ impl Scene {
         let spin = Angle((frame.wrapping_mul(128) & 0xffff) as u16);
         let centre = polar(Angle(0), 0);
         let fan = core::array::from_fn(|k| {
-            let a0 = Angle(spin.0.wrapping_add(Angle::from_turns(k as u32, FAN as u32).0));
-            let a1 = Angle(spin.0.wrapping_add(Angle::from_turns(k as u32 + 1, FAN as u32).0));
+            let a0 = Angle(
+                spin.0
+                    .wrapping_add(Angle::from_turns(k as u32, FAN as u32).0),
+            );
+            let a1 = Angle(
+                spin.0
+                    .wrapping_add(Angle::from_turns(k as u32 + 1, FAN as u32).0),
+            );
             Triangle::new(
                 [centre, polar(a0, 92), polar(a1, 92)],
                 [[4095, 4095, 4095], HUES[k], HUES[(k + 1) % FAN]],
