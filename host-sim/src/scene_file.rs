@@ -67,7 +67,7 @@ use diag::Source;
 pub const MAX_SIDE: i64 = softedge::band::MAX_WIDTH as i64;
 
 /// Pixel models that are planned but not in core yet.
-const FUTURE_MODELS: [&str; 7] = ["bed4", "bed8", "hex7", "hex19", "cone", "gauss", "hamming"];
+const FUTURE_MODELS: [&str; 4] = ["hex19", "cone", "gauss", "hamming"];
 
 /// The pixel format of the display a scene is shown on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -462,12 +462,15 @@ impl Checker<'_> {
             style.model = match name {
                 "box" => PixelModel::Box,
                 "box-seed" => PixelModel::BoxSeed,
+                "bed4" => PixelModel::BedOfNails4,
+                "bed8" => PixelModel::BedOfNails8,
+                "hex7" => PixelModel::Hex7,
                 future if FUTURE_MODELS.contains(&future) => {
                     return self.err(
                         m.span(),
                         "render.pixel_model",
                         format!(
-                            "pixel model `{future}` is not implemented yet; use `box` or `box-seed`"
+                            "pixel model `{future}` is not implemented yet; use box, box-seed, bed4, bed8 or hex7"
                         ),
                     )
                 }
@@ -475,7 +478,7 @@ impl Checker<'_> {
                     return self.err(
                         m.span(),
                         "render.pixel_model",
-                        format!("unknown pixel model `{other}`; one of box, box-seed (bed4, bed8, hex7, hex19, cone, gauss, hamming are planned)"),
+                        format!("unknown pixel model `{other}`; one of box, box-seed, bed4, bed8, hex7 (hex19, cone, gauss, hamming are planned)"),
                     )
                 }
             };

@@ -188,6 +188,11 @@ fn off_grid_coordinate_is_rounded_with_a_warning() {
 fn unknown_and_future_pixel_models_are_named() {
     let text = format!("{HEAD}[render]\npixel_model = \"hex19\"\n");
     expect(&text, 6, "render.pixel_model", "not implemented yet");
+    for model in ["bed4", "bed8", "hex7"] {
+        let text = format!("{HEAD}[render]\npixel_model = \"{model}\"\n[[line]]\nfrom = [1, 1]\nto = [9, 5]\ncolor = [4095]\n");
+        let file = parse(Path::new("model.toml"), &text).unwrap_or_else(|e| panic!("{model}: {e}"));
+        assert!(file.warnings.is_empty(), "{model}");
+    }
     let text = format!("{HEAD}[render]\npixel_model = \"round\"\n");
     expect(&text, 6, "render.pixel_model", "unknown pixel model");
     let text = "[display]\nwidth = 16\nheight = 8\nformat = \"gray2\"\n";
