@@ -272,6 +272,24 @@ impl<'a, const C: usize, K: EdgeSink<C>> Walker<'a, C, K> {
         }
     }
 
+    /// Walks to interior column `a`: one step from the previous column's
+    /// state, or a direct start when there is none (the walk's first
+    /// interior column, or after an end column); reports its pixels and
+    /// returns its chosen cell.
+    fn interior_column(&mut self, st: &mut Option<Step<C>>, a: i64) -> i64 {
+        let s = match st.take() {
+            Some(mut s) => {
+                self.step(&mut s);
+                s
+            }
+            None => self.init(a),
+        };
+        self.interior(&s);
+        let bc = s.b;
+        *st = Some(s);
+        bc
+    }
+
     /// Reports the chosen pixel of a stepped column, and in exact mode moves
     /// the spill of a minor-axis crossing to its true pixel.
     fn interior(&mut self, st: &Step<C>) {
@@ -450,17 +468,7 @@ impl<'a, const C: usize, K: EdgeSink<C>> Walker<'a, C, K> {
                 self.end_cells(a, a * SUB, a * SUB + SUB, bc, rows, |s, b| s.row_cover(b));
                 bc
             } else {
-                let s = match st.take() {
-                    Some(mut s) => {
-                        self.step(&mut s);
-                        s
-                    }
-                    None => self.init(a),
-                };
-                self.interior(&s);
-                let bc = s.b;
-                st = Some(s);
-                bc
+                self.interior_column(&mut st, a)
             };
             for row in prev..bc {
                 self.cover(row, a, self.row_cover(row));
@@ -497,17 +505,7 @@ impl<'a, const C: usize, K: EdgeSink<C>> Walker<'a, C, K> {
                 self.end_cells(a, ulo, uhi, bc, rows, |s, _| s.column_cover(a));
                 bc
             } else {
-                let s = match st.take() {
-                    Some(mut s) => {
-                        self.step(&mut s);
-                        s
-                    }
-                    None => self.init(a),
-                };
-                self.interior(&s);
-                let bc = s.b;
-                st = Some(s);
-                bc
+                self.interior_column(&mut st, a)
             };
             self.cover(a, bc, self.column_cover(a));
         }
