@@ -76,6 +76,9 @@ pub struct Scene {
     pub height: u16,
     /// 1 (gray) or 3 (RGB).
     pub channels: u8,
+    /// What the display takes: the tone stage between the band and the
+    /// byte stream.
+    pub format: stream::Format,
     /// Rows per band.
     pub band_rows: u16,
     /// How the primitives are drawn.
@@ -214,6 +217,9 @@ pub fn render<const C: usize>(
     let row = row
         .get_mut(..usize::from(scene.width))
         .ok_or(Error::TooWide)?;
+    // The Floyd–Steinberg error row, carried across bands.
+    let mut err = [0i16; MAX_SCENE_WIDTH as usize];
+    let mut encoder = stream::Encoder::new(scene, &mut err);
     for band in Bands::new(scene.width, scene.height, band_rows) {
         let mut buf = BandBuffer::<C>::new(acc, cover, band)?;
         buf.clear(channels(scene.background));
@@ -227,7 +233,7 @@ pub fn render<const C: usize>(
             let y = band.y0 + i32::from(r);
             buf.resolve_row(y, row);
             // Bands start at row 0 and stop at `height`, so `y` fits.
-            stream::encode_row(scene, y as u16, row, sink);
+            encoder.row(y as u16, row, sink);
         }
     }
     Ok(())

@@ -5,6 +5,7 @@
 //! Sizes are chosen for a 16 KiB Cortex-M0: the largest scene needs
 //! `ACC_LEN + COVER_LEN` `i32`s (about 6 KiB) of band buffers.
 
+use crate::stream::Format;
 use crate::{Fill, Object3d, Scene, Shape};
 use softedge::scene3d;
 use softedge::{PixelModel, RenderStyle, SubPoint, LIN_MAX, SUB_ONE};
@@ -137,6 +138,7 @@ pub const GOURAUD: Scene = Scene {
     width: 64,
     height: 48,
     channels: 3,
+    format: Format::Rgb565,
     band_rows: 4,
     style: AA,
     background: [200, 300, 600],
@@ -245,6 +247,7 @@ pub const MESH: Scene = Scene {
     width: MESH_COLS as u16 * MESH_CELL_PX as u16,
     height: MESH_ROWS as u16 * MESH_CELL_PX as u16,
     channels: 1,
+    format: Format::Gray8,
     band_rows: 8,
     style: AA,
     background: [0; 3],
@@ -315,6 +318,7 @@ pub const LINES: Scene = Scene {
     width: 64,
     height: 48,
     channels: 3,
+    format: Format::Rgb888,
     band_rows: 4,
     style: AA,
     background: [0; 3],
@@ -369,6 +373,7 @@ pub const ONEBIT: Scene = Scene {
     width: 96,
     height: 64,
     channels: 1,
+    format: Format::Binary,
     band_rows: 8,
     style: AA,
     background: [0; 3],
@@ -460,6 +465,7 @@ pub const LIMITS: Scene = Scene {
     width: 64,
     height: 48,
     channels: 1,
+    format: Format::Gray4,
     band_rows: 8,
     style: AA,
     background: [300; 3],
@@ -474,6 +480,7 @@ pub const SPHERE3D: Scene = Scene {
     width: 64,
     height: 48,
     channels: 3,
+    format: Format::Rgb565,
     band_rows: 4,
     style: RenderStyle {
         antialias: true,
