@@ -23,7 +23,8 @@
 //! `a + 2b + c = const`; 64 for 8x8: its `a + 2d + k = b + c + g + i = ...`).
 //! A small object moving across the grid keeps its total weight exactly.
 //!
-//! Samples are taken with the aliased walk ([`walk_edge_aliased`]) on a grid
+//! Samples are taken with the aliased walk
+//! ([`walk_edge_aliased`](crate::edge::walk_edge_aliased)) on a grid
 //! `n` times finer than the pixels, whose pixel centres are exactly the
 //! sample points; its top-left rule gives every sample on a shared edge to
 //! exactly one primitive, so meshes stay seamless to the last bit. A sample
