@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Bit identity of the reference scenes on the host, on Cortex-M0 and on
-# Cortex-M3: renders every scene of softedge-refscenes three times and fails
-# unless the three `crc <scene> <crc32>` listings are identical line for line.
+# Cortex-M3: renders every scene of softedge-refscenes four ways and fails
+# unless the four `crc <scene> <crc32>` listings (host example, softedge-sim
+# crc of the scene files, Cortex-M0, Cortex-M3) are identical line for line.
 #
 # Installs nothing. Needs (once per machine):
 #   rustup target add thumbv6m-none-eabi thumbv7m-none-eabi
@@ -33,6 +34,21 @@ scenes=$(wc -l <"$out/host")
 [ "$scenes" -gt 0 ] || { echo "check.sh: the host printed no crc line" >&2; exit 1; }
 
 status=0
+# The same scenes as scene files (refscenes/scenes/, generated from the Rust
+# data by host-sim/tests/refscenes_toml.rs), through the simulator's CLI.
+echo "== softedge-sim crc refscenes/scenes/*.toml"
+(cd "$root" && cargo build --quiet --release -p softedge-sim)
+: >"$out/sim"
+while read -r _ name _; do
+    "$root/target/release/softedge-sim" crc "$root/refscenes/scenes/$name.toml" >>"$out/sim"
+done <"$out/host"
+if diff -u "$out/host" "$out/sim"; then
+    echo "softedge-sim: $scenes crc lines identical to the host"
+else
+    echo "check.sh: softedge-sim crc differs from the host (diff above)" >&2
+    status=1
+fi
+
 for board in qemu-m0 qemu-m3; do
     echo "== $board"
     (cd "$here/$board" && cargo build --quiet --release)

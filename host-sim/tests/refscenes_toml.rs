@@ -1,0 +1,201 @@
+//! The reference scenes that host and boards share (`softedge-refscenes`,
+//! Rust data) written as scene files in `refscenes/scenes/`: `softedge-sim
+//! crc refscenes/scenes/NAME.toml` must print the very line the Cortex-M
+//! firmware prints for NAME (`boards/check.sh`). The files are generated
+//! from the Rust data by this test; `SOFTEDGE_BLESS=1 cargo test -p
+//! softedge-sim --test refscenes_toml` rewrites them after a change.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::process::Command;
+
+use softedge::scene3d::{Projection, Shape as Solid};
+use softedge::{PixelModel, SubPoint};
+use softedge_refscenes::stream::Format;
+use softedge_refscenes::{render_crc, Fill, Scene, Shape, ACC_LEN, COVER_LEN, SCENES};
+
+fn px(v: i32) -> String {
+    // Sub-pixels to pixels: v / 16 is exact in binary and in decimal.
+    format!("{:?}", f64::from(v) / 16.0)
+}
+
+fn point(p: SubPoint) -> String {
+    format!("[{}, {}]", px(p.x), px(p.y))
+}
+
+/// Linear 12-bit colour with the scene's channels; core clamps above 4095,
+/// so writing the clamped value draws the same.
+fn color(scene: &Scene, c: [u16; 3]) -> String {
+    let n = usize::from(scene.channels);
+    let v: Vec<String> = c.iter().take(n).map(|v| v.min(&4095).to_string()).collect();
+    format!("[{}]", v.join(", "))
+}
+
+fn colors(scene: &Scene, cs: &[[u16; 3]]) -> String {
+    let v: Vec<String> = cs.iter().map(|&c| color(scene, c)).collect();
+    format!("[{}]", v.join(", "))
+}
+
+fn num(v: f64) -> String {
+    format!("{v:?}")
+}
+
+fn to_toml(scene: &Scene) -> String {
+    let format = match scene.format {
+        Format::Gray8 => "gray8",
+        Format::Gray4 => "gray4",
+        Format::Rgb565 => "rgb565",
+        Format::Rgb888 => "rgb888",
+        Format::Binary => "binary",
+    };
+    let model = match scene.style.model {
+        PixelModel::BoxSeed => "box-seed",
+        _ => "box",
+    };
+    let mut t = String::new();
+    let _ = writeln!(
+        t,
+        "# Generated from softedge-refscenes by host-sim/tests/refscenes_toml.rs: do not edit."
+    );
+    let _ = writeln!(
+        t,
+        "# `softedge-sim crc` of this file prints the line boards/check.sh expects."
+    );
+    let _ = writeln!(
+        t,
+        "[display]\nwidth = {}\nheight = {}\nformat = \"{format}\"",
+        scene.width, scene.height
+    );
+    let _ = writeln!(t, "background = {}", color(scene, scene.background));
+    let _ = writeln!(
+        t,
+        "[render]\nantialias = {}\npixel_model = \"{model}\"\ngamma = 2.2\nband_rows = {}",
+        scene.style.antialias, scene.band_rows
+    );
+    for shape in scene.shapes {
+        match *shape {
+            Shape::Triangle(v, c) => {
+                let _ = writeln!(
+                    t,
+                    "[[triangle]]\npoints = [{}, {}, {}]\ncolors = {}",
+                    point(v[0]),
+                    point(v[1]),
+                    point(v[2]),
+                    colors(scene, &c)
+                );
+            }
+            Shape::Line(a, b, c) => {
+                let _ = writeln!(
+                    t,
+                    "[[line]]\nfrom = {}\nto = {}\ncolors = {}",
+                    point(a),
+                    point(b),
+                    colors(scene, &c)
+                );
+            }
+            Shape::Polygon(v, fill) => {
+                let pts: Vec<String> = v.iter().map(|&p| point(p)).collect();
+                let _ = writeln!(t, "[[polygon]]\npoints = [{}]", pts.join(", "));
+                let _ = match fill {
+                    Fill::Flat(c) => writeln!(t, "color = {}", color(scene, c)),
+                    Fill::PerVertex(cs) => writeln!(t, "colors = {}", colors(scene, cs)),
+                };
+            }
+            Shape::Object(o) => {
+                let c = &o.camera;
+                let v3 = |v: softedge::scene3d::Vec3| {
+                    let b = v.to_bits();
+                    format!(
+                        "[{}, {}, {}]",
+                        num(f64::from(b[0]) / 65536.0),
+                        num(f64::from(b[1]) / 65536.0),
+                        num(f64::from(b[2]) / 65536.0)
+                    )
+                };
+                let Projection::Orthographic { px_per_unit } = c.projection else {
+                    panic!("{}: only orthographic cameras are exported", scene.name);
+                };
+                let _ = writeln!(
+                    t,
+                    "[camera]\nprojection = \"orthographic\"\neye = {}\ntarget = {}\nup = {}\nscale = {}",
+                    v3(c.eye),
+                    v3(c.target),
+                    v3(c.up),
+                    num(px_per_unit.to_num::<f64>())
+                );
+                let [ambient, diffuse] = o.ambient_diffuse;
+                let _ = writeln!(
+                    t,
+                    "[light]\ndirection = {}\nambient = {}\ndiffuse = {}",
+                    v3(o.to_light),
+                    num(f64::from(ambient) / 4096.0),
+                    num(f64::from(diffuse) / 4096.0)
+                );
+                let Solid::Sphere { radius, segments } = o.shape else {
+                    panic!("{}: only spheres are exported", scene.name);
+                };
+                let deg = |a: softedge::scene3d::Angle| num(f64::from(a.0) * 360.0 / 65536.0);
+                let _ = writeln!(
+                    t,
+                    "[[object]]\nshape = \"sphere\"\nradius = {}\nsegments = {segments}\nposition = [0.0, 0.0, 0.0]\nrotation = [{}, {}, {}]\ncolor = {}",
+                    num(radius.to_num::<f64>()),
+                    deg(o.rotation[0]),
+                    deg(o.rotation[1]),
+                    deg(o.rotation[2]),
+                    color(scene, o.color)
+                );
+            }
+        }
+    }
+    t
+}
+
+fn dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../refscenes/scenes")
+}
+
+#[test]
+fn scene_files_of_the_reference_scenes_are_up_to_date() {
+    let bless = std::env::var_os("SOFTEDGE_BLESS").is_some();
+    for scene in SCENES {
+        let path = dir().join(format!("{}.toml", scene.name));
+        let text = to_toml(scene);
+        if bless {
+            std::fs::create_dir_all(dir()).unwrap();
+            std::fs::write(&path, &text).unwrap();
+        }
+        let committed = std::fs::read_to_string(&path).unwrap_or_default();
+        assert_eq!(
+            committed,
+            text,
+            "{} is stale: regenerate with SOFTEDGE_BLESS=1 cargo test -p softedge-sim --test refscenes_toml",
+            path.display()
+        );
+    }
+}
+
+#[test]
+fn softedge_sim_crc_of_each_reference_scene_file_equals_the_firmware_line() {
+    let (mut acc, mut cover) = (vec![0i32; ACC_LEN], vec![0i32; COVER_LEN]);
+    for scene in SCENES {
+        let expected = format!(
+            "crc {} {:08x}",
+            scene.name,
+            render_crc(scene, &mut acc, &mut cover).unwrap()
+        );
+        let path = dir().join(format!("{}.toml", scene.name));
+        let out = Command::new(env!("CARGO_BIN_EXE_softedge-sim"))
+            .arg("crc")
+            .arg(&path)
+            .output()
+            .unwrap();
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            out.status.success(),
+            "{}: {}",
+            scene.name,
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert_eq!(stdout.trim(), expected, "{}", scene.name);
+    }
+}
