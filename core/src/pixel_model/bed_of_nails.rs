@@ -67,8 +67,10 @@ impl<const C: usize> EdgeSink<C> for Distribute<'_, '_, C> {
         let half = n / 2;
         let (c, r) = (i64::from(c), i64::from(r));
         // Coverage units per unit of sample weight: 4096 / (2 n^2)^2.
-        let per_weight =
-            i64::from(COVER_ONE) / (i64::from(tent_sum(self.n)) * i64::from(tent_sum(self.n)));
+        let per_weight = div_floor(
+            i64::from(COVER_ONE),
+            i64::from(tent_sum(self.n)) * i64::from(tent_sum(self.n)),
+        );
         let cum: &[i32] = if self.n == 2 { &CUM_2 } else { &CUM_4 };
         // Base of pixel p along an axis: fine indices [n p - n/2, n p + 3n/2).
         let j_hi = div_floor(r + half, n);

@@ -144,6 +144,11 @@ pub(crate) fn normalize(v: [i64; 3], bits: u32) -> Option<[i64; 3]> {
 
 /// `round(a / b)` for `b > 0` (halves away from zero).
 pub(crate) const fn div_round(a: i64, b: i64) -> i64 {
+    // Callers divide by positive lengths; a zero divisor gives 0 rather
+    // than a panic path (firmware builds must link without one).
+    if b <= 0 {
+        return 0;
+    }
     if a >= 0 {
         (a + b / 2) / b
     } else {

@@ -439,12 +439,20 @@ fn cone(w: &mut Writer<'_>, radius: I16F16, height: I16F16, segments: u16) {
     w.fan_up(rim, centre, n);
 }
 
+/// `p[axis] = value` for an axis index from a table (no panic path).
+fn set(p: &mut [i64; 3], axis: usize, value: i64) {
+    if let Some(c) = p.get_mut(axis) {
+        *c = value;
+    }
+}
+
 fn cuboid(w: &mut Writer<'_>, size: Vec3, segments: u16) {
     let k = i64::from(segments);
     let half = size.wide().map(|c| c / 2);
     // Lattice coordinate t in 0..=k of axis a, the same expression on every
     // face so shared edges get identical positions.
-    let coord = |a: usize, t: i64| -half[a] + (2 * half[a] * t) / k;
+    let h = |a: usize| half.get(a).copied().unwrap_or(0);
+    let coord = |a: usize, t: i64| -h(a) + (2 * h(a) * t).checked_div(k).unwrap_or(0);
     // (normal axis, sign, u axis, v axis) with u x v pointing out.
     let faces: [(usize, i64, usize, usize); 6] = [
         (0, 1, 1, 2),
@@ -457,13 +465,13 @@ fn cuboid(w: &mut Writer<'_>, size: Vec3, segments: u16) {
     for (axis, sign, u, v) in faces {
         let start = w.nv;
         let mut normal = [0i64; 3];
-        normal[axis] = sign;
+        set(&mut normal, axis, sign);
         for j in 0..=k {
             for i in 0..=k {
                 let mut p = [0i64; 3];
-                p[axis] = if sign > 0 { half[axis] } else { -half[axis] };
-                p[u] = coord(u, i);
-                p[v] = coord(v, j);
+                set(&mut p, axis, if sign > 0 { h(axis) } else { -h(axis) });
+                set(&mut p, u, coord(u, i));
+                set(&mut p, v, coord(v, j));
                 w.vertex(p, normal);
             }
         }

@@ -382,23 +382,30 @@ fn emit_triangle<const C: usize>(
     for k in 0..3 {
         let (a, b) = (v[k], v[(k + 1) % 3]);
         let (a_in, b_in) = (a.p[2] >= near, b.p[2] >= near);
+        // At most 4 vertices come out (one per edge plus one cut); `get_mut`
+        // keeps that bound without a panic path.
         if a_in {
-            poly[len] = a;
+            if let Some(slot) = poly.get_mut(len) {
+                *slot = a;
+            }
             len += 1;
         }
         if a_in != b_in {
-            poly[len] = if a_in {
-                cut(a, b, near)
-            } else {
-                cut(b, a, near)
-            };
+            if let Some(slot) = poly.get_mut(len) {
+                *slot = if a_in {
+                    cut(a, b, near)
+                } else {
+                    cut(b, a, near)
+                };
+            }
             len += 1;
         }
     }
+    let len = len.min(poly.len());
     let mut screen = [(SubPoint::default(), 0u16); 4];
-    for k in 0..len {
-        match view.project_camera(poly[k].p) {
-            Some(s) => screen[k] = s,
+    for (slot, c) in screen.iter_mut().zip(&poly).take(len) {
+        match view.project_camera(c.p) {
+            Some(s) => *slot = s,
             None => {
                 stats.off_range += 1;
                 return;
@@ -406,7 +413,8 @@ fn emit_triangle<const C: usize>(
         }
     }
     for k in 1..len.saturating_sub(1) {
-        let idx = [0, k, k + 1];
+        // k + 1 < len <= 4: in range; `min` lets the compiler see it.
+        let idx = [0, k, k + 1].map(|i| i.min(3));
         let vertices = idx.map(|i| screen[i].0);
         // Counter-clockwise seen from outside stays counter-clockwise as
         // seen on screen, which in y-down coordinates is a negative area2.

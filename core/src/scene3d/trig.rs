@@ -126,13 +126,16 @@ pub const fn sin_q16(a: Angle) -> i32 {
     let p = if quadrant & 1 == 1 { (1 << 14) - p } else { p };
     let idx = (p >> STEP_BITS) as usize;
     let frac = (p & ((1 << STEP_BITS) - 1)) as i32;
+    // idx <= QUARTER, and idx < QUARTER when frac != 0; the explicit
+    // bounds let the compiler drop its checks (no panic path).
+    let last = SIN_Q24.len() - 1;
+    let lo = SIN_Q24[if idx < last { idx } else { last }];
     let v24 = if frac == 0 {
-        SIN_Q24[idx] << STEP_BITS
+        lo << STEP_BITS
     } else {
-        // idx < QUARTER here, so idx + 1 is in the table. Steps are below
-        // 2^24 * pi / 512 < 2^17: the product stays below 2^23.
-        let lo = SIN_Q24[idx];
-        let hi = SIN_Q24[idx + 1];
+        // Steps are below 2^24 * pi / 512 < 2^17: the product stays below
+        // 2^23.
+        let hi = SIN_Q24[if idx + 1 < last { idx + 1 } else { last }];
         (lo << STEP_BITS) + (hi - lo) * frac
     };
     // One rounding, from Q(24 + STEP_BITS) to Q16 (below 2^31 throughout).
