@@ -60,6 +60,7 @@ pub mod edge;
 #[cfg(feature = "embedded-graphics")]
 pub mod eg;
 pub mod geom;
+pub mod hsr;
 pub mod pixel_model;
 pub mod postfilter;
 pub mod raster;

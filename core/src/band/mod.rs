@@ -38,6 +38,7 @@
 //! right of an edge) into it and the span sweep reads it back and clears it.
 
 mod span;
+mod zsweep;
 
 use crate::shade::LIN_MAX;
 use crate::COVER_BITS;
@@ -112,6 +113,9 @@ pub enum BandError {
     AccTooSmall,
     /// `cover` is shorter than [`BandBuffer::cover_len`].
     CoverTooSmall,
+    /// A depth buffer's slices are shorter than
+    /// [`DepthBuffer::len`](crate::hsr::DepthBuffer::len).
+    DepthTooSmall,
 }
 
 /// The accumulation buffer of one band, over caller-provided storage.

@@ -27,10 +27,10 @@
 //! Orientation does not matter: clockwise and counter-clockwise vertex
 //! orders give the same pixels.
 
-mod simple;
+pub(crate) mod simple;
 
 use crate::band::BandBuffer;
-use crate::edge::{walk_edge, walk_edge_aliased, AreaMode};
+use crate::edge::{walk_edge, walk_edge_aliased, AreaMode, EdgeSink};
 use crate::geom::{area2, CoordError, SubPoint};
 use crate::pixel_model::{walk_bed_of_nails, walk_hex7};
 use crate::shade::Plane;
@@ -199,6 +199,47 @@ impl<'a, const C: usize> Polygon<'a, C> {
 
     /// Accumulates the polygon into the band.
     pub fn draw(&self, band: &mut BandBuffer<'_, C>, style: &RenderStyle) -> Result<(), DrawError> {
+        let Some(p) = self.prepare(None)? else {
+            return Ok(());
+        };
+        let bg = band.background();
+        if let Some(&first) = p.colors.first() {
+            if p.colors.iter().all(|c| *c == first) {
+                fill(band, &p.points, &Plane::flat(first, bg), style);
+                return Ok(());
+            }
+        }
+        p.triangles(|tri, colors, _| {
+            if let Some(plane) = Plane::triangle(tri, colors, bg) {
+                fill(band, &tri, &plane, style);
+            }
+        })
+    }
+
+    /// The polygon as triangles with a depth per vertex (`depths`, one per
+    /// vertex, larger is nearer), for hidden-surface removal
+    /// ([`hsr`](crate::hsr)). The same checks as [`draw`](Self::draw);
+    /// [`DrawError::ColorCount`] also when `depths` has another length.
+    pub fn depth_triangles(
+        &self,
+        depths: &[u16],
+        mut emit: impl FnMut(crate::hsr::DepthTriangle<C>),
+    ) -> Result<(), DrawError> {
+        let Some(p) = self.prepare(Some(depths))? else {
+            return Ok(());
+        };
+        p.triangles(|vertices, colors, depth| {
+            emit(crate::hsr::DepthTriangle {
+                vertices,
+                colors,
+                depth,
+            })
+        })
+    }
+
+    /// Checks the polygon and drops repeated vertices; `None` when nothing
+    /// is to be drawn.
+    fn prepare(&self, depths: Option<&[u16]>) -> Result<Option<Prepared<C>>, DrawError> {
         let v = self.vertices;
         if v.len() > MAX_POLYGON_VERTICES {
             return Err(DrawError::TooManyVertices);
@@ -208,56 +249,77 @@ impl<'a, const C: usize> Polygon<'a, C> {
                 return Err(DrawError::ColorCount);
             }
         }
+        if depths.is_some_and(|d| d.len() != v.len()) {
+            return Err(DrawError::ColorCount);
+        }
         for p in v {
             p.check()?;
         }
         // Drop repeated consecutive vertices: they only add zero-length edges.
-        let mut pts: heapless::Vec<SubPoint, MAX_POLYGON_VERTICES> = heapless::Vec::new();
-        let mut cols: heapless::Vec<[u16; C], MAX_POLYGON_VERTICES> = heapless::Vec::new();
-        for (k, &p) in v.iter().enumerate() {
-            if pts.last() != Some(&p) {
+        let mut p = Prepared {
+            points: heapless::Vec::new(),
+            colors: heapless::Vec::new(),
+            depths: heapless::Vec::new(),
+        };
+        for (k, &pt) in v.iter().enumerate() {
+            if p.points.last() != Some(&pt) {
                 let c = match self.colors {
                     PolygonColors::Flat(c) => c,
                     PolygonColors::PerVertex(cs) => cs.get(k).copied().unwrap_or([0; C]),
                 };
+                let z = depths.and_then(|d| d.get(k).copied()).unwrap_or(0);
                 // Capacity is MAX_POLYGON_VERTICES, checked above.
-                let _ = pts.push(p);
-                let _ = cols.push(c);
+                let _ = p.points.push(pt);
+                let _ = p.colors.push(c);
+                let _ = p.depths.push(z);
             }
         }
-        while pts.len() > 1 && pts.first() == pts.last() {
-            pts.pop();
-            cols.pop();
+        while p.points.len() > 1 && p.points.first() == p.points.last() {
+            p.points.pop();
+            p.colors.pop();
+            p.depths.pop();
         }
-        if pts.len() < 3 || simple::collinear(&pts) {
-            return Ok(());
+        if p.points.len() < 3 || simple::collinear(&p.points) {
+            return Ok(None);
         }
-        if !simple::is_simple(&pts) {
+        if !simple::is_simple(&p.points) {
             return Err(DrawError::SelfIntersecting);
         }
-        let bg = band.background();
-        if let Some(&first) = cols.first() {
-            if cols.iter().all(|c| *c == first) {
-                fill(band, &pts, &Plane::flat(first, bg), style);
-                return Ok(());
-            }
-        }
-        let ok = simple::ear_clip::<MAX_POLYGON_VERTICES>(&pts, |[a, b, c]| {
-            let (Some(&pa), Some(&pb), Some(&pc)) = (pts.get(a), pts.get(b), pts.get(c)) else {
+        Ok(Some(p))
+    }
+}
+
+/// A checked polygon: distinct consecutive vertices, simple.
+struct Prepared<const C: usize> {
+    points: heapless::Vec<SubPoint, MAX_POLYGON_VERTICES>,
+    colors: heapless::Vec<[u16; C], MAX_POLYGON_VERTICES>,
+    depths: heapless::Vec<u16, MAX_POLYGON_VERTICES>,
+}
+
+impl<const C: usize> Prepared<C> {
+    /// Splits the polygon into triangles along its diagonals (ear clipping).
+    fn triangles(
+        &self,
+        mut emit: impl FnMut([SubPoint; 3], [[u16; C]; 3], [u16; 3]),
+    ) -> Result<(), DrawError> {
+        let ok = simple::ear_clip::<MAX_POLYGON_VERTICES>(&self.points, |idx| {
+            let pick = |k: usize| {
+                Some((
+                    *self.points.get(k)?,
+                    *self.colors.get(k)?,
+                    *self.depths.get(k)?,
+                ))
+            };
+            let (Some(a), Some(b), Some(c)) = (pick(idx[0]), pick(idx[1]), pick(idx[2])) else {
                 return;
             };
-            let (Some(&ca), Some(&cb), Some(&cc)) = (cols.get(a), cols.get(b), cols.get(c)) else {
-                return;
-            };
-            let tri = [pa, pb, pc];
-            if let Some(plane) = Plane::triangle(tri, [ca, cb, cc], bg) {
-                fill(band, &tri, &plane, style);
-            }
+            emit([a.0, b.0, c.0], [a.1, b.1, c.1], [a.2, b.2, c.2]);
         });
-        if !ok {
-            return Err(DrawError::SelfIntersecting);
+        if ok {
+            Ok(())
+        } else {
+            Err(DrawError::SelfIntersecting)
         }
-        Ok(())
     }
 }
 
@@ -347,12 +409,38 @@ impl<const C: usize> Line<C> {
 
 /// Walks every edge of a closed outline sharing one plane, then sweeps its
 /// spans. The outline must be simple (or a triangle).
-fn fill<const C: usize>(
+pub(crate) fn fill<const C: usize>(
     band: &mut BandBuffer<'_, C>,
     v: &[SubPoint],
     plane: &Plane<C>,
     style: &RenderStyle,
 ) {
+    if let Some(rows) = walk_outline(band, v, plane, style, Cells::Accumulate) {
+        band.sweep(rows.start, rows.end, plane);
+    }
+}
+
+/// Where the box model's edge pixels go.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Cells {
+    /// `I * S` straight into the accumulator (the seed-001 evaluator).
+    Accumulate,
+    /// Coverage only, as a pair of cover changes (`+S` at the pixel, `-S`
+    /// right of it) in the scratch, so the sweep sees each pixel's whole
+    /// coverage: what a depth test needs.
+    AsCover,
+}
+
+/// Walks every edge of a closed outline into the band (edge pixels and
+/// cover changes) and returns the frame rows the sweep must visit, or
+/// `None` when the outline cannot touch the band.
+pub(crate) fn walk_outline<const C: usize>(
+    band: &mut BandBuffer<'_, C>,
+    v: &[SubPoint],
+    plane: &Plane<C>,
+    style: &RenderStyle,
+    cells: Cells,
+) -> Option<core::ops::Range<i32>> {
     let info = band.band();
     let (mut x_min, mut x_max, mut y_min, mut y_max) = (i32::MAX, i32::MIN, i32::MAX, i32::MIN);
     for p in v {
@@ -380,7 +468,7 @@ fn fill<const C: usize>(
     // Wholly above, below, right or left of the band: nothing to add (left
     // of it, the edges' covers would cancel at column 0).
     if rows.start >= rows.end || (x_min >> SUB_BITS) >= i32::from(info.width) || x_max < 0 {
-        return;
+        return None;
     }
     // Inside lies right of edges that run down the screen for a
     // counter-clockwise (negative area) outline.
@@ -398,11 +486,37 @@ fn fill<const C: usize>(
             walk_bed_of_nails(band, p0, p1, orientation, samples, rows.clone());
         } else if hex {
             walk_hex7(band, p0, p1, orientation, rows.clone());
+        } else if cells == Cells::AsCover {
+            walk_edge(
+                p0,
+                p1,
+                orientation,
+                plane,
+                mode,
+                rows.clone(),
+                &mut CellsAsCover(band),
+            );
         } else {
             walk_edge(p0, p1, orientation, plane, mode, rows.clone(), band);
         }
     }
-    band.sweep(rows.start, rows.end, plane);
+    Some(rows)
+}
+
+/// An edge sink that turns each edge pixel into a pair of cover changes.
+struct CellsAsCover<'x, 'a, const C: usize>(&'x mut BandBuffer<'a, C>);
+
+impl<const C: usize> EdgeSink<C> for CellsAsCover<'_, '_, C> {
+    fn cell(&mut self, x: i32, y: i32, coverage: i32, _value: &[i32; C]) {
+        self.0.add_cover(x, y, coverage);
+        self.0.add_cover(x.saturating_add(1), y, -coverage);
+    }
+    fn cover(&mut self, x: i32, y: i32, delta: i32) {
+        self.0.add_cover(x, y, delta);
+    }
+    fn columns(&self) -> core::ops::Range<i32> {
+        0..i32::from(self.0.band().width)
+    }
 }
 
 #[cfg(test)]

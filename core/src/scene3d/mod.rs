@@ -77,9 +77,7 @@ pub use math::{Transform, Vec3, MATRIX_LIMIT, WORLD_LIMIT};
 pub use mesh::{Mesh, MeshRef, Shape, Vertex, MAX_MESH_VERTICES, MAX_SEGMENTS, MIN_SEGMENTS};
 pub use trig::{sin_q16, Angle};
 
-use crate::band::BandBuffer;
 use crate::geom::{area2, SubPoint};
-use crate::raster::{DrawError, RenderStyle, Triangle};
 use crate::shade::LIN_MAX;
 use math::{normalize, NormalMatrix};
 
@@ -211,30 +209,11 @@ impl<const C: usize> ViewVertex<C> {
     };
 }
 
-/// A triangle ready to draw: sub-pixel vertices, colours and depths.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub struct ScreenTriangle<const C: usize> {
-    /// Vertices in 1/16 px, counter-clockwise as seen on screen, inside the
-    /// coordinate range.
-    pub vertices: [SubPoint; 3],
-    /// Linear 12-bit colour per vertex.
-    pub colors: [[u16; C]; 3],
-    /// Depth per vertex, larger is nearer (seed 004).
-    pub depth: [u16; 3],
-}
-
-impl<const C: usize> ScreenTriangle<C> {
-    /// The 2D triangle for the edge engine.
-    pub const fn triangle(&self) -> Triangle<C> {
-        Triangle::new(self.vertices, self.colors)
-    }
-
-    /// Accumulates the triangle into a band ([`Triangle::draw`]).
-    pub fn draw(&self, band: &mut BandBuffer<'_, C>, style: &RenderStyle) -> Result<(), DrawError> {
-        self.triangle().draw(band, style)
-    }
-}
+/// A triangle ready to draw: sub-pixel vertices (counter-clockwise as seen
+/// on screen, inside the coordinate range), colours and depths (larger is
+/// nearer, seed 004): the [`DepthTriangle`](crate::hsr::DepthTriangle) of
+/// hidden-surface removal.
+pub type ScreenTriangle<const C: usize> = crate::hsr::DepthTriangle<C>;
 
 /// What [`project`] did with the triangles it was given.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -1,0 +1,109 @@
+//! The depth-tested sweep: one primitive's pixels composited against the
+//! band's depth buffer (the z-buffer of seed 004 with anti-aliased edges).
+//!
+//! The walk has left the primitive's whole coverage in the cover scratch
+//! (edge pixels as pairs of changes), so a running sum along the row gives
+//! each pixel's coverage `S`; Gouraud intensity and depth step by one
+//! addition per pixel. Per pixel, against the stored depth `Z` and coverage
+//! `K` (see [`hsr`](crate::hsr) for why this rule):
+//!
+//! - `S` full and `z > Z`: the primitive is nearer than everything in the
+//!   pixel and hides it: the pixel becomes `I`, `K = full`, `Z = z`
+//!   (a write, shifts only);
+//! - otherwise the primitive takes what is left of the pixel:
+//!   `s = min(S, full - K)`, `acc += (I - bg) * s`, `K += s`,
+//!   `Z = max(Z, z)`: one multiply per channel for a partly covered pixel.
+
+use super::BandBuffer;
+use crate::hsr::{DepthBuffer, DepthPlane, FULL};
+use crate::shade::{Plane, PLANE_FRAC};
+use crate::COVER_BITS;
+
+impl<const C: usize> BandBuffer<'_, C> {
+    /// Composites the primitive whose edges were just walked (coverage only)
+    /// over frame rows `y_lo..y_hi` against `zbuf`, and clears the scratch.
+    #[inline(never)] // kept out of line so profiles can name it
+    pub(crate) fn sweep_depth(
+        &mut self,
+        y_lo: i32,
+        y_hi: i32,
+        plane: &Plane<C>,
+        zplane: &DepthPlane,
+        zbuf: &mut DepthBuffer<'_>,
+    ) {
+        let w = usize::from(self.band.width);
+        let y_lo = y_lo.max(self.band.y0);
+        let y_hi = y_hi.min(self.band.y0 + i32::from(self.band.rows));
+        let bg = self.background.map(|b| i32::from(b) << COVER_BITS);
+        let full = i32::from(FULL);
+        for y in y_lo..y_hi {
+            let r = (y - self.band.y0) as usize;
+            let scratch = r * (w + 2);
+            let Some(row_cover) = self.cover.get_mut(scratch..scratch + w + 2) else {
+                continue;
+            };
+            let (deltas, ext) = row_cover.split_at_mut(w);
+            let (lo, hi) = (
+                core::mem::replace(&mut ext[0], i32::MAX),
+                core::mem::replace(&mut ext[1], i32::MIN),
+            );
+            if lo > hi {
+                continue;
+            }
+            let (lo, hi) = (lo.max(0) as usize, (hi.max(0) as usize).min(w - 1));
+            let (Some(row_acc), Some((zrow, krow))) = (
+                self.acc.get_mut(r * w * C..(r + 1) * w * C),
+                zbuf.row_mut(r),
+            ) else {
+                // Clear what the walk left, even without a depth row.
+                deltas.iter_mut().for_each(|d| *d = 0);
+                continue;
+            };
+            // Row setup: the only multiplies outside partly covered pixels.
+            let mut v = plane.at(lo as i32, y);
+            let mut zf = zplane.at(lo as i32, y);
+            let mut c: i32 = 0;
+            for x in lo..w {
+                if x <= hi {
+                    c += deltas.get_mut(x).map_or(0, core::mem::take);
+                } else if c == 0 {
+                    break;
+                }
+                let s_px = c.clamp(0, full);
+                if s_px > 0 {
+                    let z = zplane.depth(zf);
+                    if let (Some(px), Some(zd), Some(k)) = (
+                        row_acc.get_mut(x * C..x * C + C),
+                        zrow.get_mut(x),
+                        krow.get_mut(x),
+                    ) {
+                        if s_px == full && z > *zd {
+                            for ch in 0..C {
+                                px[ch] = bg[ch]
+                                    .saturating_add((v[ch] >> (PLANE_FRAC - COVER_BITS)) as i32);
+                            }
+                            *k = FULL;
+                            *zd = z;
+                        } else {
+                            let s = s_px.min(full - i32::from(*k));
+                            if s > 0 {
+                                for ch in 0..C {
+                                    let add = (v[ch] * i64::from(s)) >> PLANE_FRAC;
+                                    px[ch] = px[ch].saturating_add(add as i32);
+                                }
+                                *k += s as u16;
+                                if z > *zd {
+                                    *zd = z;
+                                }
+                            }
+                        }
+                    }
+                }
+                for ch in 0..C {
+                    v[ch] += i64::from(plane.gx[ch]);
+                }
+                zf += zplane.gx;
+            }
+        }
+    }
+}

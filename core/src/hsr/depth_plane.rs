@@ -1,0 +1,179 @@
+//! Setup: the depth plane of a triangle, `z(i, j)` at pixel centres.
+
+use crate::geom::SubPoint;
+
+/// Fraction bits of the fine depth values the sweep steps.
+pub const DEPTH_FRAC: u32 = 16;
+
+/// Steepest depth gradient kept, in fine units per pixel: the whole depth
+/// range (65535) per pixel. A triangle steeper than that is thinner than a
+/// pixel seen along its depth gradient; it gets its mean depth, flat.
+const GRAD_LIMIT: i64 = (u16::MAX as i64) << DEPTH_FRAC;
+
+/// The depth of a triangle at pixel centres, `z * 2^16`, an exact integer
+/// function of the pixel address (the same bits stepped or evaluated, so
+/// every band height gives the same depths), clamped to the range of the
+/// triangle's own vertex depths when read (a pixel centre outside the
+/// triangle never gets a depth nearer or farther than the triangle has).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct DepthPlane {
+    /// Reference pixel column.
+    pub i0: i32,
+    /// Reference pixel row.
+    pub j0: i32,
+    /// `z * 2^16` at the centre of pixel `(i0, j0)`.
+    pub at0: i64,
+    /// Change per pixel to the right, `* 2^16`.
+    pub gx: i64,
+    /// Change per pixel down, `* 2^16`.
+    pub gy: i64,
+    /// Farthest vertex depth.
+    pub lo: u16,
+    /// Nearest vertex depth.
+    pub hi: u16,
+}
+
+/// `round(n / d)` for `d > 0`.
+fn div_round(n: i64, d: i64) -> i64 {
+    crate::arith::div_floor(2 * n + d, 2 * d)
+}
+
+impl DepthPlane {
+    /// One depth everywhere.
+    pub const fn flat(z: u16) -> Self {
+        Self {
+            i0: 0,
+            j0: 0,
+            at0: (z as i64) << DEPTH_FRAC,
+            gx: 0,
+            gy: 0,
+            lo: z,
+            hi: z,
+        }
+    }
+
+    /// The plane through three vertices and their depths, or `None` for a
+    /// triangle of zero area. Vertices must be inside the coordinate range
+    /// ([`SubPoint::check`]); every product then stays below `2^54`.
+    pub fn triangle(v: [SubPoint; 3], z: [u16; 3]) -> Option<Self> {
+        let (x0, y0) = (i64::from(v[0].x), i64::from(v[0].y));
+        let (dx1, dy1) = (i64::from(v[1].x) - x0, i64::from(v[1].y) - y0);
+        let (dx2, dy2) = (i64::from(v[2].x) - x0, i64::from(v[2].y) - y0);
+        let mut d = dx1 * dy2 - dx2 * dy1;
+        if d == 0 {
+            return None;
+        }
+        let sign = d.signum();
+        d *= sign;
+        let lo = z[0].min(z[1]).min(z[2]);
+        let hi = z[0].max(z[1]).max(z[2]);
+        let (z0, dz1, dz2) = (
+            i64::from(z[0]),
+            i64::from(z[1]) - i64::from(z[0]),
+            i64::from(z[2]) - i64::from(z[0]),
+        );
+        let one = 1i64 << DEPTH_FRAC;
+        let per_px = i64::from(crate::SUB_ONE);
+        // dz/dx = a / d and dz/dy = b / d per sub-pixel unit.
+        let a = sign * (dz1 * dy2 - dz2 * dy1);
+        let b = sign * (dz2 * dx1 - dz1 * dx2);
+        let gx = div_round(a * per_px * one, d);
+        let gy = div_round(b * per_px * one, d);
+        let i0 = v[0].x >> crate::SUB_BITS;
+        let j0 = v[0].y >> crate::SUB_BITS;
+        if gx.abs() > GRAD_LIMIT || gy.abs() > GRAD_LIMIT {
+            let mean = div_round((z0 + i64::from(z[1]) + i64::from(z[2])) * one, 3);
+            return Some(Self {
+                i0,
+                j0,
+                at0: mean,
+                gx: 0,
+                gy: 0,
+                lo,
+                hi,
+            });
+        }
+        let half = i64::from(crate::SUB_ONE / 2);
+        let cx = i64::from(i0) * per_px + half - x0;
+        let cy = i64::from(j0) * per_px + half - y0;
+        let at0 = z0 * one + div_round((a * cx + b * cy) * one, d);
+        Some(Self {
+            i0,
+            j0,
+            at0,
+            gx,
+            gy,
+            lo,
+            hi,
+        })
+    }
+
+    /// `z * 2^16` at the centre of pixel `(i, j)`, unclamped (setup use:
+    /// two multiplies).
+    pub fn at(&self, i: i32, j: i32) -> i64 {
+        let di = i64::from(i) - i64::from(self.i0);
+        let dj = i64::from(j) - i64::from(self.j0);
+        self.at0 + self.gx * di + self.gy * dj
+    }
+
+    /// A fine value rounded to a depth and clamped to the triangle's range
+    /// (per pixel: an add, a shift, two compares).
+    #[inline]
+    pub fn depth(&self, fine: i64) -> u16 {
+        let z = (fine + (1 << (DEPTH_FRAC - 1))) >> DEPTH_FRAC;
+        if z < i64::from(self.lo) {
+            self.lo
+        } else if z > i64::from(self.hi) {
+            self.hi
+        } else {
+            z as u16
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn plane_hits_vertex_depths_at_pixel_centres() {
+        let c = |x: i32, y: i32| SubPoint::new(x * 16 + 8, y * 16 + 8);
+        let p = DepthPlane::triangle([c(0, 0), c(10, 0), c(0, 10)], [0, 40000, 20000]).unwrap();
+        assert_eq!(p.depth(p.at(0, 0)), 0);
+        assert_eq!(p.depth(p.at(10, 0)), 40000);
+        assert_eq!(p.depth(p.at(0, 10)), 20000);
+        assert_eq!(p.depth(p.at(5, 5)), 30000);
+        // Outside the triangle the plane goes on, the depth is clamped.
+        assert_eq!(p.depth(p.at(20, 0)), 40000);
+        assert_eq!(p.depth(p.at(-5, 0)), 0);
+    }
+
+    #[test]
+    fn stepping_equals_evaluating() {
+        let v = [
+            SubPoint::new(3, 5),
+            SubPoint::new(900, 170),
+            SubPoint::new(40, 601),
+        ];
+        let p = DepthPlane::triangle(v, [65535, 3, 31000]).unwrap();
+        let mut z = p.at(-3, 7);
+        for i in -3..60 {
+            assert_eq!(z, p.at(i, 7));
+            z += p.gx;
+        }
+    }
+
+    #[test]
+    fn sliver_is_flat_at_the_mean_depth() {
+        let v = [
+            SubPoint::new(0, 0),
+            SubPoint::new(1000, 0),
+            SubPoint::new(0, 1),
+        ];
+        let p = DepthPlane::triangle(v, [0, 0, 65535]).unwrap();
+        assert_eq!((p.gx, p.gy), (0, 0));
+        assert_eq!(p.depth(p.at(3, 0)), 21845);
+        assert!(DepthPlane::triangle([v[0], v[0], v[1]], [1, 2, 3]).is_none());
+    }
+}
