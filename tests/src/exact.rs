@@ -245,11 +245,16 @@ pub fn gouraud_at_centre(v: [(i64, i64); 3], c: [i64; 3], i: i64, j: i64) -> Opt
 }
 
 /// Is pixel `(i, j)` lit by the aliased (point-sampled) polygon under the
-/// top-left rule? The sample is the pixel centre nudged by `(ε, ε²)`: a
-/// centre on a left edge or a top edge is inside, on a right or bottom edge
-/// outside. Crossing test with a ray to the right of the nudged point.
+/// top-left rule? (Its centre, [`point_inside_top_left`].)
 pub fn centre_inside_top_left(poly: &[(i64, i64)], i: i64, j: i64) -> bool {
-    let (cx, cy) = (16 * i + 8, 16 * j + 8);
+    point_inside_top_left(poly, 16 * i + 8, 16 * j + 8)
+}
+
+/// Is the point `(cx, cy)` inside the polygon under the top-left rule? The
+/// point is nudged by `(ε, ε²)`: a point on a left edge or a top edge is
+/// inside, on a right or bottom edge outside. Crossing test with a ray to
+/// the right of the nudged point.
+pub fn point_inside_top_left(poly: &[(i64, i64)], cx: i64, cy: i64) -> bool {
     let n = poly.len();
     let mut crossings = 0;
     for k in 0..n {

@@ -9,9 +9,12 @@
 //!   reports.
 //! - [`shapes`]: test shapes made from random numbers: star-shaped simple
 //!   polygons and triangulations of a square.
+//! - [`visible`]: which triangle is visible where (seed 004), by point
+//!   sampling with exact depth comparisons: the hidden-surface reference.
 #![forbid(unsafe_code)]
 
 pub mod exact;
 pub mod frame;
 pub mod ratio;
 pub mod shapes;
+pub mod visible;
