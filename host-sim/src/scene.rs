@@ -17,7 +17,9 @@
 
 use std::fmt;
 
-use softedge::hsr::{sort_front_to_back, DepthBuffer, DepthTriangle, HsrError, Section};
+use softedge::hsr::{
+    draw_zbuffer, sort_front_to_back, DepthBuffer, DepthTriangle, HsrError, Section,
+};
 use softedge::postfilter::{FilterError, FilterStats, LightnessFilter, LightnessPixel};
 use softedge::{
     Band, BandBuffer, BandError, Bands, DrawError, Line, Polygon, PolygonColors, RenderStyle,
@@ -351,15 +353,15 @@ impl<const C: usize> BandStore<C> {
             Prepared::ZBuffer(tris) => {
                 let mut zbuf = DepthBuffer::new(&mut self.depth, &mut self.covered, band)
                     .map_err(|error| RenderError::Band { band, error })?;
-                for (t, index) in tris {
-                    t.draw_z(&mut buf, &mut zbuf, style).map_err(|e| match e {
-                        HsrError::Draw(error) => RenderError::Draw {
-                            index: *index,
-                            error,
-                        },
-                        other => RenderError::Hsr(other),
-                    })?;
-                }
+                let (tris, index): (Vec<_>, Vec<_>) = tris.iter().copied().unzip();
+                draw_zbuffer(&tris, &mut buf, &mut zbuf, style).map_err(|e| match e {
+                    // Vertices were checked when the frame was prepared.
+                    HsrError::Draw(error) => RenderError::Draw {
+                        index: index.first().copied().unwrap_or(0),
+                        error,
+                    },
+                    other => RenderError::Hsr(other),
+                })?;
             }
         }
         done(&buf);

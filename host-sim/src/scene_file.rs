@@ -711,7 +711,17 @@ impl Checker<'_> {
                 vec![p],
             ));
         }
-        items.extend(objects::objects::<C>(self, file, width, height)?);
+        // Section mode cuts through back faces too; everything else culls them.
+        let section = file
+            .render
+            .as_ref()
+            .is_some_and(|r| r.get_ref().section.is_some());
+        let faces = if section {
+            softedge::scene3d::Faces::Both
+        } else {
+            softedge::scene3d::Faces::Front
+        };
+        items.extend(objects::objects::<C>(self, file, width, height, faces)?);
         // File order across tables (a stable sort keeps ties as read).
         items.sort_by_key(|(o, _)| o.span.start);
         let mut scene = Scene::new(width, height, background);

@@ -5,7 +5,7 @@
 
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
-use softedge::hsr::{sort_front_to_back, DepthBuffer, DepthTriangle, Section};
+use softedge::hsr::{draw_zbuffer, sort_front_to_back, DepthBuffer, DepthTriangle, Section, ZPass};
 use softedge::{
     BandBuffer, Bands, PixelModel, Polygon, PolygonColors, RenderStyle, SubPoint, Triangle,
 };
@@ -13,7 +13,8 @@ use softedge_tests::exact::{centre_inside_top_left, gouraud_at_centre, to_f64, C
 use softedge_tests::frame::{render, Frame};
 use softedge_tests::visible::{visible_image, RefTri};
 
-/// Draws `tris` in the given order through a z-buffer, in bands of `rows`.
+/// Draws `tris` in the given order through a z-buffer ([`draw_zbuffer`]),
+/// in bands of `rows`.
 fn render_z<const C: usize>(
     width: u16,
     height: u16,
@@ -21,6 +22,19 @@ fn render_z<const C: usize>(
     bg: [u16; C],
     tris: &[DepthTriangle<C>],
     style: RenderStyle,
+) -> (Frame<C>, Vec<u16>) {
+    render_z_with(width, height, rows, bg, tris, style, None)
+}
+
+/// [`render_z`], or with every triangle drawn in one pass `single`.
+fn render_z_with<const C: usize>(
+    width: u16,
+    height: u16,
+    rows: u16,
+    bg: [u16; C],
+    tris: &[DepthTriangle<C>],
+    style: RenderStyle,
+    single: Option<ZPass>,
 ) -> (Frame<C>, Vec<u16>) {
     let (w, h) = (usize::from(width), usize::from(height));
     let mut raw = vec![[0i32; C]; w * h];
@@ -34,8 +48,13 @@ fn render_z<const C: usize>(
         let mut buf = BandBuffer::<C>::new(&mut acc, &mut cover, band).unwrap();
         let mut zbuf = DepthBuffer::new(&mut zd, &mut zc, band).unwrap();
         buf.clear(bg);
-        for t in tris {
-            t.draw_z(&mut buf, &mut zbuf, &style).unwrap();
+        match single {
+            Some(pass) => {
+                for t in tris {
+                    t.draw_z(&mut buf, &mut zbuf, &style, pass).unwrap();
+                }
+            }
+            None => draw_zbuffer(tris, &mut buf, &mut zbuf, &style).unwrap(),
         }
         for y in band.y0..band.y0 + i32::from(band.rows) {
             for x in 0..i32::from(width) {

@@ -119,6 +119,14 @@ impl DepthPlane {
         self.at0 + self.gx * di + self.gy * dj
     }
 
+    /// How much the depth changes across one pixel, `|dz/dx| + |dz/dy|`,
+    /// rounded up (setup use).
+    pub fn slope(&self) -> u16 {
+        let fine = self.gx.unsigned_abs() + self.gy.unsigned_abs();
+        let whole = (fine >> DEPTH_FRAC) + 1;
+        whole.min(u64::from(u16::MAX)) as u16
+    }
+
     /// A fine value rounded to a depth and clamped to the triangle's range
     /// (per pixel: an add, a shift, two compares).
     #[inline]

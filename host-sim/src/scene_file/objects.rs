@@ -8,8 +8,8 @@
 //! then moved to its position.
 
 use softedge::scene3d::{
-    project_mesh, Angle, Camera, Light, MeshRef, Projection, SceneError, Shape, Transform, Vec3,
-    Vertex, ViewVertex, I16F16, MAX_PX_PER_UNIT, MAX_SEGMENTS, WORLD_LIMIT,
+    project_faces, Angle, Camera, Faces, Light, MeshRef, Part, Projection, SceneError, Shape,
+    Transform, Vec3, Vertex, ViewVertex, I16F16, MAX_PX_PER_UNIT, MAX_SEGMENTS, WORLD_LIMIT,
 };
 
 use super::{raw, Checked, Checker, Origin};
@@ -62,6 +62,7 @@ pub(super) fn objects<const C: usize>(
     file: &raw::File,
     width: u16,
     height: u16,
+    faces: Faces,
 ) -> Checked<Vec<(Origin, Vec<Primitive<C>>)>> {
     let mut out = Vec::new();
     if file.object.is_empty() {
@@ -202,9 +203,20 @@ pub(super) fn objects<const C: usize>(
         };
         let mut scratch = vec![ViewVertex::<C>::EMPTY; nv];
         let mut prims = Vec::new();
-        project_mesh(mesh, &transform, color, &view, &light, &mut scratch, |t| {
-            prims.push(Primitive::Depth(t))
-        })
+        let part = Part {
+            mesh,
+            transform,
+            color,
+        };
+        project_faces(
+            &[part],
+            &Transform::IDENTITY,
+            &view,
+            &light,
+            &mut scratch,
+            faces,
+            |t| prims.push(Primitive::Depth(t)),
+        )
         .or_else(|e| {
             let at = match e {
                 SceneError::ZeroDirection => "light.direction",
