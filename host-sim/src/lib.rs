@@ -44,6 +44,7 @@
 pub mod font;
 pub mod gallery;
 pub mod image;
+pub mod memory;
 pub mod png_out;
 pub mod scene;
 pub mod scene_file;
