@@ -93,7 +93,10 @@ mod tests {
     #[test]
     fn rgb565_240_at_16_rows() {
         let m = band_memory(240, 3, 16);
-        assert_eq!((m.acc, m.cover, m.depth, m.covered), (46_080, 15_488, 7_680, 7_680));
+        assert_eq!(
+            (m.acc, m.cover, m.depth, m.covered),
+            (46_080, 15_488, 7_680, 7_680)
+        );
         assert_eq!(m.zbuffer(), 76_928);
         let one = band_memory(240, 3, 1);
         assert_eq!(one.zbuffer(), 2_880 + 968 + 480 + 480);
