@@ -409,6 +409,7 @@ impl<const C: usize> Line<C> {
 
 /// Walks every edge of a closed outline sharing one plane, then sweeps its
 /// spans. The outline must be simple (or a triangle).
+#[inline(never)] // kept out of line so profiles can name it
 pub(crate) fn fill<const C: usize>(
     band: &mut BandBuffer<'_, C>,
     v: &[SubPoint],
