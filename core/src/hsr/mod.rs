@@ -289,22 +289,27 @@ pub fn draw_zbuffer<const C: usize>(
     zbuf: &mut DepthBuffer<'_>,
     style: &RenderStyle,
 ) -> Result<(), HsrError> {
-    if !style.antialias {
-        for t in tris {
-            t.draw_z(band, zbuf, style, ZPass::Single)?;
-        }
-        return Ok(());
-    }
-    for t in tris {
-        t.draw_z(band, zbuf, style, ZPass::Centres)?;
-    }
-    zbuf.finish_centres();
-    for pass in [ZPass::Front, ZPass::Back] {
+    for &pass in zbuffer_passes(style) {
         for t in tris {
             t.draw_z(band, zbuf, style, pass)?;
         }
+        if pass == ZPass::Centres {
+            zbuf.finish_centres();
+        }
     }
     Ok(())
+}
+
+/// The passes [`draw_zbuffer`] makes for `style`, for a caller that
+/// produces its triangles again in every pass (projecting a mesh three
+/// times instead of storing it): per pass, every triangle in the same
+/// order, then [`DepthBuffer::finish_centres`] after [`ZPass::Centres`].
+pub const fn zbuffer_passes(style: &RenderStyle) -> &'static [ZPass] {
+    if style.antialias {
+        &[ZPass::Centres, ZPass::Front, ZPass::Back]
+    } else {
+        &[ZPass::Single]
+    }
 }
 
 /// Sorts triangles front to back: larger [`DepthTriangle::depth_key`]
