@@ -616,3 +616,66 @@ fn hex19_points_are_equal_energy_and_near_the_seed_weights() {
     eprintln!("Hex19 weights within {worst:.4} of a pixel of the seed's");
     assert!(worst < 0.011);
 }
+
+/// One sample, isolated by a square one sample spacing wide, lands on each
+/// pixel with the weight its footprint gives it: for Hex19 the points of
+/// [`HEX19_POINTS`] (the offset from the pixel's centre to the sample, in
+/// quarter pixels), for the circular filters `weight(kx, ky)` of the slot
+/// the sample falls on. Checks the walks against the published weights,
+/// pixel by pixel, for samples of every lattice class / a spread of
+/// phases.
+#[test]
+fn one_sample_lands_on_each_pixel_with_its_footprint_weight() {
+    // Hex19: lattice points relative to pixel (20, 20)'s centre (20.5, 20.5)
+    // px, one per class, in quarter pixels.
+    for (px4, py4) in [(0, 0), (2, 0), (1, 2), (3, 2), (-3, -2), (6, 4)] {
+        // The sample at (20.5 + px4/4, 20.5 + py4/4); a 1/2-px square from
+        // 1/8 px up-left of it holds it alone.
+        let (sx, sy) = (20 * 16 + 8 + 4 * px4, 20 * 16 + 8 + 4 * py4);
+        let f = point_square(PixelModel::Hex19, sx - 2, sy - 2, 8);
+        for y in 0..i32::from(H) {
+            for x in 0..i32::from(W) {
+                // Offset of the sample from pixel (x, y)'s centre.
+                let (ox4, oy4) = ((sx - (16 * x + 8)) / 4, (sy - (16 * y + 8)) / 4);
+                let w = HEX19_POINTS
+                    .iter()
+                    .find(|p| (p.0, p.1) == (ox4, oy4))
+                    .map_or(0, |p| p.2);
+                let got = f[(y * i32::from(W) + x) as usize];
+                assert_eq!(
+                    got,
+                    4095 * w,
+                    "Hex19 sample {px4},{py4} on pixel ({x}, {y})"
+                );
+            }
+        }
+    }
+    for (filter, model) in [
+        (CircularFilter::Cone, PixelModel::Cone),
+        (CircularFilter::Gaussian, PixelModel::Gaussian),
+        (CircularFilter::Hamming, PixelModel::Hamming),
+    ] {
+        let m = filter.width_px() as i32;
+        let half = (16 * m - 16) / 2;
+        for (a, b) in [(0, 0), (3, 11), (7, 8), (15, 15), (9, 2)] {
+            // The sample of phase (a, b) in pixel (20, 20): sub-pixel
+            // (20 * 16 + a, 20 * 16 + b), its own 1/16-px square.
+            let (sx, sy) = (20 * 16 + a, 20 * 16 + b);
+            let f = point_square(model, sx, sy, 1);
+            for y in 0..i32::from(H) {
+                for x in 0..i32::from(W) {
+                    // Slot of the sample in pixel (x, y)'s footprint.
+                    let (kx, ky) = (sx - (16 * x - half), sy - (16 * y - half));
+                    let inside = (0..16 * m).contains(&kx) && (0..16 * m).contains(&ky);
+                    let w = if inside {
+                        filter.weight(kx as usize, ky as usize) as i32
+                    } else {
+                        0
+                    };
+                    let got = f[(y * i32::from(W) + x) as usize];
+                    assert_eq!(got, 4095 * w, "{filter:?} phase ({a}, {b}) on ({x}, {y})");
+                }
+            }
+        }
+    }
+}

@@ -306,7 +306,7 @@ impl<const C: usize> EdgeSink<C> for Hex19Rows<'_, '_, C> {
         }
         let sign = delta.signum();
         let c = i64::from(c);
-        let fp = |o: i64, cum: &'static [u16]| RowFootprint { n: 2, o, cum };
+        let fp = |o: i64, cum: &'static [u16]| RowFootprint { shift: 1, o, cum };
         if is_a {
             let j = g.div_euclid(2);
             splat_row(self.band, &self.rows, j, c, sign, fp(-1, &HEX19_A0));

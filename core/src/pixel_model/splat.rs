@@ -9,25 +9,24 @@
 //! the weight of the samples right of a cut `t` columns into the footprint.
 //! When the aliased walk reports that samples from fine column `c` on are
 //! covered (cover change of sign `s`), the pixels whose footprints lie
-//! wholly right of `c` gain `s * cum[0]` (one cover change, carried by the
-//! span sweep), and each pixel whose footprint `c` cuts gains `s * cum[t]`
-//! for itself only (a change at `p` taken back at `p + 1`). Per call: one
-//! division by the constant `n` (a shift for `n` = 2, 4) and at most
-//! `1 + 2 ceil(L / n)` table look-ups and cover adds. Values stay within
-//! `±cum[0] <= ±COVER_ONE`: nothing overflows.
+//! wholly right of `c` gain `s * cum[0]` (carried by the span sweep), and
+//! each pixel whose footprint `c` cuts gains `s * cum[t]` for itself only;
+//! written as the differences between neighbouring pixels' shares, that is
+//! one cover change per pixel. Per call: one shift (`n` is a power of
+//! two) and at most `1 + ceil(L / n)` table look-ups and cover adds.
+//! Values stay within `±2 cum[0] <= ±2 COVER_ONE`: nothing overflows.
 
 use core::ops::Range;
 
-use crate::arith::div_ceil;
 use crate::band::BandBuffer;
 
 /// The footprint of every pixel in one sample row: fine columns
-/// `n p + o .. n p + o + L`, weights given by their suffix sums `cum`
-/// (length `L + 1`).
+/// `n p + o .. n p + o + L` with `n = 2^shift`, weights given by their
+/// suffix sums `cum` (length `L + 1`).
 #[derive(Clone, Copy)]
 pub(super) struct RowFootprint<'a> {
-    /// Fine columns per pixel.
-    pub n: i64,
+    /// `log2` of the fine columns per pixel.
+    pub shift: u32,
     /// First fine column of pixel 0's footprint.
     pub o: i64,
     /// Suffix sums of the weights.
@@ -45,24 +44,35 @@ pub(super) fn splat_row<const C: usize>(
     sign: i32,
     fp: RowFootprint<'_>,
 ) {
-    let RowFootprint { n, o, cum } = fp;
-    if !rows.contains(&j) || n <= 0 {
+    let RowFootprint { shift, o, cum } = fp;
+    if !rows.contains(&j) || shift > 8 {
         return;
     }
+    let n = 1i64 << shift;
     let len = cum.len() as i64 - 1;
     let total = i32::from(cum.first().copied().unwrap_or(0));
-    // First pixel whose footprint starts at or right of c.
-    let p_full = div_ceil(c - o, n);
-    band.add_cover(p_full as i32, j, sign * total);
-    // Pixels left of it whose footprint c cuts: 0 < t < L.
-    let reach = div_ceil(len, n);
+    // First pixel whose footprint starts at or right of c: ceil((c - o) / n)
+    // (an arithmetic shift floors, also below zero).
+    let p_full = (c - o + n - 1) >> shift;
+    // Pixel p's share is v_p = cum[t], t = c - (n p + o) (0 once t >= L),
+    // for the pixels left of p_full, and `total` from p_full on. Written as
+    // the differences v_p - v_{p-1}, one cover change per pixel.
+    let reach = (len + n - 1) >> shift;
+    let mut prev = 0;
     for p in p_full - reach..p_full {
-        let t = c - (n * p + o);
-        if t > 0 && t < len {
-            let v = sign * i32::from(cum.get(t as usize).copied().unwrap_or(0));
-            band.add_cover(p as i32, j, v);
-            band.add_cover(p as i32 + 1, j, -v);
+        let t = c - ((p << shift) + o);
+        let v = if t < len {
+            sign * i32::from(cum.get(t as usize).copied().unwrap_or(0))
+        } else {
+            0
+        };
+        if v != prev {
+            band.add_cover(p as i32, j, v - prev);
+            prev = v;
         }
+    }
+    if sign * total != prev {
+        band.add_cover(p_full as i32, j, sign * total - prev);
     }
 }
 
