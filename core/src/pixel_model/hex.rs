@@ -19,6 +19,14 @@
 //! edges stay seamless) on a grid twice as fine, shifted a quarter pixel so
 //! its sample centres fall on the lattice: one walk for the A rows, one for
 //! the B rows.
+//!
+//! The 19-point pixel ([`HEX19_POINTS`]) uses the same lattice and walks;
+//! its footprint adds ring 2, one lattice step further out: in its own A
+//! row the points at `x ± 1`, in the A rows one pixel above and below the
+//! points at `x` and `x ± 1/2`, in the B rows those at `x ± 3/4`. Each
+//! sample row's cover change is spread over the footprints by
+//! `splat_row` (shifts, table look-ups and adds). Why its weights differ
+//! from the seed's: see [`pixel_model`](crate::pixel_model).
 
 use core::ops::Range;
 

@@ -64,7 +64,7 @@ pub enum PixelModel {
     /// energy ([`HEX19_POINTS`](crate::pixel_model::HEX19_POINTS)).
     Hex19,
     /// The cone filter of seed 003's survey, `R` = 1 px, as an equal-energy
-    /// splat of 4x4 samples per pixel ([`CircularFilter::Cone`]).
+    /// splat of 16x16 samples per pixel ([`CircularFilter::Cone`]).
     Cone,
     /// The Gaussian of seed 003's survey, `sigma` = 1/2 px, cut at 1.5 px
     /// ([`CircularFilter::Gaussian`]).
