@@ -67,9 +67,6 @@ use diag::Source;
 /// Largest frame side, pixels (the band buffer's limit).
 pub const MAX_SIDE: i64 = softedge::band::MAX_WIDTH as i64;
 
-/// Pixel models that are planned but not in core yet.
-const FUTURE_MODELS: [&str; 4] = ["hex19", "cone", "gauss", "hamming"];
-
 /// The pixel format of the display a scene is shown on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum DisplayFormat {
@@ -490,20 +487,15 @@ impl Checker<'_> {
                 "bed4" => PixelModel::BedOfNails4,
                 "bed8" => PixelModel::BedOfNails8,
                 "hex7" => PixelModel::Hex7,
-                future if FUTURE_MODELS.contains(&future) => {
-                    return self.err(
-                        m.span(),
-                        "render.pixel_model",
-                        format!(
-                            "pixel model `{future}` is not implemented yet; use box, box-seed, bed4, bed8 or hex7"
-                        ),
-                    )
-                }
+                "hex19" => PixelModel::Hex19,
+                "cone" => PixelModel::Cone,
+                "gauss" => PixelModel::Gaussian,
+                "hamming" => PixelModel::Hamming,
                 other => {
                     return self.err(
                         m.span(),
                         "render.pixel_model",
-                        format!("unknown pixel model `{other}`; one of box, box-seed, bed4, bed8, hex7 (hex19, cone, gauss, hamming are planned)"),
+                        format!("unknown pixel model `{other}`; one of box, box-seed, bed4, bed8, hex7, hex19, cone, gauss, hamming"),
                     )
                 }
             };

@@ -185,10 +185,10 @@ fn off_grid_coordinate_is_rounded_with_a_warning() {
 }
 
 #[test]
-fn unknown_and_future_pixel_models_are_named() {
-    let text = format!("{HEAD}[render]\npixel_model = \"hex19\"\n");
-    expect(&text, 6, "render.pixel_model", "not implemented yet");
-    for model in ["bed4", "bed8", "hex7"] {
+fn unknown_pixel_models_are_named_and_every_model_parses() {
+    for model in [
+        "box", "box-seed", "bed4", "bed8", "hex7", "hex19", "cone", "gauss", "hamming",
+    ] {
         let text = format!("{HEAD}[render]\npixel_model = \"{model}\"\n[[line]]\nfrom = [1, 1]\nto = [9, 5]\ncolor = [4095]\n");
         let file = parse(Path::new("model.toml"), &text).unwrap_or_else(|e| panic!("{model}: {e}"));
         assert!(file.warnings.is_empty(), "{model}");

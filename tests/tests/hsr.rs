@@ -244,6 +244,8 @@ fn mesh_under_zbuffer_is_seamless() {
                     PixelModel::BoxSeed,
                     PixelModel::BedOfNails4,
                     PixelModel::Hex7,
+                    PixelModel::Hex19,
+                    PixelModel::Cone,
                 ]),
             ),
             |(pts, centre, color, model)| {

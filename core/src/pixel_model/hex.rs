@@ -19,6 +19,14 @@
 //! edges stay seamless) on a grid twice as fine, shifted a quarter pixel so
 //! its sample centres fall on the lattice: one walk for the A rows, one for
 //! the B rows.
+//!
+//! The 19-point pixel ([`HEX19_POINTS`]) uses the same lattice and walks;
+//! its footprint adds ring 2, one lattice step further out: in its own A
+//! row the points at `x ± 1`, in the A rows one pixel above and below the
+//! points at `x` and `x ± 1/2`, in the B rows those at `x ± 3/4`. Each
+//! sample row's cover change is spread over the footprints by
+//! `splat_row` (shifts, table look-ups and adds). Why its weights differ
+//! from the seed's: see [`pixel_model`](crate::pixel_model).
 
 use core::ops::Range;
 
@@ -47,6 +55,7 @@ pub fn hex7_offsets(dx: i64, dy: i64) -> [i64; 7] {
     [a, b, -(dy << 1), -a, -b, dy << 1, 0]
 }
 
+use super::splat::{splat_row, suffix_sums, RowFootprint};
 use crate::arith::div_ceil;
 use crate::band::BandBuffer;
 use crate::edge::{walk_edge_aliased, EdgeSink};
@@ -146,6 +155,176 @@ impl<const C: usize> EdgeSink<C> for HexRows<'_, '_, C> {
             let partial: &[(i64, i32)] = if odd { &[(1, 1)] } else { &[] };
             for j in [j_above, j_above + 1] {
                 self.spread(j, c, unit, 2, partial);
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------
+// The 19-point hexagonal pixel.
+
+/// Weight units of a Hex19 pixel: its 19 weights add to [`COVER_ONE`].
+const HEX19_TOTAL: i32 = COVER_ONE;
+/// Each of the lattice's 4 point classes carries a quarter of it.
+const HEX19_CLASS: i32 = HEX19_TOTAL / 4;
+
+/// The seed's cone weights as fractions of the pixel: `V1`, `(V7 - V1)/6`,
+/// `(1 - V7)/12` (seed 003; SPEC §6).
+const SEED_V1: f64 = 0.123;
+const SEED_V7: f64 = 0.492;
+const SEED_CENTRE: f64 = SEED_V1 * HEX19_TOTAL as f64;
+const SEED_RING1: f64 = (SEED_V7 - SEED_V1) / 6.0 * HEX19_TOTAL as f64;
+const SEED_RING2: f64 = (1.0 - SEED_V7) / 12.0 * HEX19_TOTAL as f64;
+
+/// The integer weights of the orbits of a class nearest (least squares)
+/// to the seed's: a class holding `k_outer` ring-2 points of one orbit and
+/// `k_inner` points of another orbit (target `inner`) must add to
+/// [`HEX19_CLASS`]; spreading the difference equally over the class's
+/// `k_outer + k_inner` points is the least-squares change. Returns
+/// `(inner, outer)`: `outer` rounded to nearest, `inner` takes the rest
+/// (exact in integers because `HEX19_CLASS - k_outer * outer` is a multiple
+/// of `k_inner` for the classes used).
+const fn project(inner: f64, k_inner: i32, k_outer: i32) -> (i32, i32) {
+    let sum = inner * k_inner as f64 + SEED_RING2 * k_outer as f64;
+    let shift = (HEX19_CLASS as f64 - sum) / (k_inner + k_outer) as f64;
+    let outer = (SEED_RING2 + shift + 0.5) as i32;
+    ((HEX19_CLASS - k_outer * outer) / k_inner, outer)
+}
+
+/// Class `A0` (row A, centres): the centre and the four ring-2 points
+/// `(±1, 0)`, `(0, ±1)` (both orbits shifted alike).
+const CLASS_A0: (i32, i32) = project(SEED_CENTRE, 1, 4);
+/// Class `A½`: the ring-1 points `(±1/2, 0)` and ring-2 `(±1/2, ±1)`.
+const CLASS_AH: (i32, i32) = project(SEED_RING1, 2, 4);
+/// Each `B` class: two ring-1 points `(±1/4, ±1/2)` and two ring-2 points
+/// `(±3/4, ±1/2)`.
+const CLASS_B: (i32, i32) = project(SEED_RING1, 2, 2);
+
+/// The 19 points of a Hex19 pixel: `(x4, y4, weight)` with the offset from
+/// the pixel's centre in quarter pixels and the weight in units of
+/// `1/4096` of the pixel (the 19 weights add to 4096). Centre; ring 1
+/// (`(±1/2, 0)`, `(±1/4, ±1/2)`); ring 2 (`(±1, 0)`, `(0, ±1)`,
+/// `(±1/2, ±1)`, `(±3/4, ±1/2)`). Derived from the seed's cone weights as
+/// the module docs of [`pixel_model`](crate::pixel_model) explain:
+/// 468, 224, 295, 139, 139, 144, 217.
+///
+/// ```
+/// use softedge::pixel_model::HEX19_POINTS;
+/// assert_eq!(HEX19_POINTS.iter().map(|p| p.2).sum::<i32>(), 4096);
+/// // Every point of the lattice carries 1024 in all: the pixels that hold
+/// // a point are the translates of the offsets in the same class mod 1 px.
+/// for class in [(0, 0), (2, 0), (1, 2), (3, 2)] {
+///     let total: i32 = HEX19_POINTS
+///         .iter()
+///         .filter(|p| (p.0.rem_euclid(4), p.1.rem_euclid(4)) == class)
+///         .map(|p| p.2)
+///         .sum();
+///     assert_eq!(total, 1024);
+/// }
+/// ```
+pub const HEX19_POINTS: [(i32, i32, i32); 19] = {
+    let (c, b_ax) = CLASS_A0;
+    let (a_row, b_far) = CLASS_AH;
+    let (a_diag, b_diag) = CLASS_B;
+    [
+        (0, 0, c),
+        (-2, 0, a_row),
+        (2, 0, a_row),
+        (-1, -2, a_diag),
+        (1, -2, a_diag),
+        (-1, 2, a_diag),
+        (1, 2, a_diag),
+        (-4, 0, b_ax),
+        (4, 0, b_ax),
+        (0, -4, b_ax),
+        (0, 4, b_ax),
+        (-2, -4, b_far),
+        (2, -4, b_far),
+        (-2, 4, b_far),
+        (2, 4, b_far),
+        (-3, -2, b_diag),
+        (3, -2, b_diag),
+        (-3, 2, b_diag),
+        (3, 2, b_diag),
+    ]
+};
+
+/// A row (the centre's row): fine columns `2i - 1 ..= 2i + 3` of pixel `i`,
+/// offsets `-1, -1/2, 0, 1/2, 1` px.
+const HEX19_A0: [u16; 6] =
+    suffix_sums([CLASS_A0.1, CLASS_AH.0, CLASS_A0.0, CLASS_AH.0, CLASS_A0.1]);
+/// A rows one pixel above and below: fine columns `2i ..= 2i + 2`,
+/// offsets `-1/2, 0, 1/2` px.
+const HEX19_A1: [u16; 4] = suffix_sums([CLASS_AH.1, CLASS_A0.1, CLASS_AH.1]);
+/// B rows half a pixel above and below: fine columns `2i - 1 ..= 2i + 2`,
+/// offsets `-3/4, -1/4, 1/4, 3/4` px.
+const HEX19_B: [u16; 5] = suffix_sums([CLASS_B.1, CLASS_B.0, CLASS_B.0, CLASS_B.1]);
+
+/// Walks edge `p0 -> p1` of a primitive for the hexagonal 19-point model,
+/// writing coverage changes for pixel `rows` into the band. The lattice and
+/// the two walks are those of the 7-point model; only the footprint grows.
+pub(crate) fn walk_hex19<const C: usize>(
+    band: &mut BandBuffer<'_, C>,
+    p0: SubPoint,
+    p1: SubPoint,
+    orientation: i32,
+    rows: Range<i32>,
+) {
+    let quarter = SUB_ONE / 4;
+    let fine = |p: SubPoint, dx: i32| {
+        SubPoint::new(
+            p.x.saturating_add(dx).saturating_mul(2),
+            p.y.saturating_sub(quarter).saturating_mul(2),
+        )
+    };
+    // Pixel row j takes fine rows 2j - 2 ..= 2j + 2.
+    let fine_rows = rows.start.saturating_mul(2).saturating_sub(2)
+        ..rows.end.saturating_mul(2).saturating_add(1);
+    for row_a in [true, false] {
+        let dx = if row_a { quarter } else { 0 };
+        let mut sink = Hex19Rows {
+            band: &mut *band,
+            row_a,
+            rows: rows.clone(),
+        };
+        walk_edge_aliased::<C, _>(
+            fine(p0, dx),
+            fine(p1, dx),
+            orientation,
+            fine_rows.clone(),
+            &mut sink,
+        );
+    }
+}
+
+/// Spreads one row type's cover changes over the Hex19 footprints.
+struct Hex19Rows<'a, 'b, const C: usize> {
+    band: &'a mut BandBuffer<'b, C>,
+    row_a: bool,
+    rows: Range<i32>,
+}
+
+impl<const C: usize> EdgeSink<C> for Hex19Rows<'_, '_, C> {
+    fn cell(&mut self, _: i32, _: i32, _: i32, _: &[i32; C]) {}
+
+    fn cover(&mut self, c: i32, g: i32, delta: i32) {
+        let is_a = g.rem_euclid(2) == 0;
+        if is_a != self.row_a {
+            return;
+        }
+        let sign = delta.signum();
+        let c = i64::from(c);
+        let fp = |o: i64, cum: &'static [u16]| RowFootprint { shift: 1, o, cum };
+        if is_a {
+            let j = g.div_euclid(2);
+            splat_row(self.band, &self.rows, j, c, sign, fp(-1, &HEX19_A0));
+            for jj in [j - 1, j + 1] {
+                splat_row(self.band, &self.rows, jj, c, sign, fp(0, &HEX19_A1));
+            }
+        } else {
+            let j_above = (g - 1).div_euclid(2);
+            for jj in [j_above, j_above + 1] {
+                splat_row(self.band, &self.rows, jj, c, sign, fp(-1, &HEX19_B));
             }
         }
     }

@@ -40,6 +40,35 @@
 //! seed lays them out, so they form a lattice in which every point carries
 //! the same total weight: equal energy again, exactly. See `hex.rs`.
 //!
+//! Nineteen points (seed 003's 1 + 6 + 12) on the same lattice: the ring-2
+//! points lie one lattice step beyond ring 1. The seed's cone weights
+//! (centre `V1 = 0.123`, ring 1 `(V7 - V1)/6`, ring 2 `(1 - V7)/12` each)
+//! are *not* equal energy here: the lattice has four classes of points
+//! (mod 1 px), and the pixels holding a point of class `A0` (row A,
+//! centres) or `A½` (row A, between centres) give it 0.292 of a pixel in
+//! all, those holding a `B` point only 0.208. The weights used
+//! ([`HEX19_POINTS`]) are the integers nearest the seed's (least squares,
+//! per class) that give every class exactly 1024/4096: centre 468 (seed
+//! 504), ring 1 224 on the row and 295 on the diagonals (seed 252), ring 2
+//! 139 at `(±1, 0)` and `(0, ±1)`, 144 at `(±1/2, ±1)`, 217 at
+//! `(±3/4, ±1/2)` (seed 173); no weight moves by more than 0.011 of a
+//! pixel. The diagonal points gain because the `B` rows hold fewer of a
+//! pixel's points. Of the seed's cone numbers, `h = 0.106` follows from
+//! the cone model and `V7 = 0.492` nearly (0.500, the cone over the disc
+//! holding the 7 sub-pixels), `V1 = 0.123` does not (0.074 over the
+//! central sub-pixel); the tests compute all three.
+//!
+//! ## Circular filters (seed 003's survey)
+//!
+//! Cone `H (1 - r/R)`, Gaussian and Hamming `(cos(pi x/W) cos(pi y/W))^e`,
+//! sampled at every sub-pixel (16x16 samples per pixel), each sample's
+//! weight spread over the pixels within the filter's radius by a table
+//! computed at compile time from the formula and made equal energy per
+//! sample position in integers. Moving an object by whole sub-pixels then
+//! leaves its summed intensity exactly unchanged. See `circular.rs` for
+//! why samples rather than a table by edge distance, and the measured
+//! deviation from the continuous filters.
+//!
 //! Per sample row and edge: one add/compare step of the walk and a few
 //! table look-ups and adds. The coverage of an edge pixel then changes from
 //! one pixel to the next, so the span sweep sets up `I * coverage` with one
@@ -47,11 +76,18 @@
 //! along the walk, which a sampled model is not).
 
 mod bed_of_nails;
+mod circular;
 mod hex;
+mod splat;
 
 pub(crate) use bed_of_nails::walk_bed_of_nails;
-pub use hex::hex7_offsets;
-pub(crate) use hex::walk_hex7;
+pub(crate) use circular::walk_circular;
+pub use circular::{
+    CircularFilter, CIRCULAR_PHASE_TOTAL, CIRCULAR_SAMPLES, CONE_RADIUS, GAUSS_SIGMA, HAMMING_E,
+    HAMMING_W,
+};
+pub use hex::{hex7_offsets, HEX19_POINTS};
+pub(crate) use hex::{walk_hex19, walk_hex7};
 
 /// Tent weights of a bed-of-nails filter with `n` samples per pixel and axis
 /// (`2n` over the 2-pixel base): `w_k = 2n - |2k + 1 - 2n|`.

@@ -32,7 +32,7 @@ pub(crate) mod simple;
 use crate::band::BandBuffer;
 use crate::edge::{walk_edge, walk_edge_aliased, AreaMode, EdgeSink};
 use crate::geom::{area2, CoordError, SubPoint};
-use crate::pixel_model::{walk_bed_of_nails, walk_hex7};
+use crate::pixel_model::{walk_bed_of_nails, walk_circular, walk_hex19, walk_hex7, CircularFilter};
 use crate::shade::Plane;
 use crate::SUB_BITS;
 
@@ -59,6 +59,19 @@ pub enum PixelModel {
     /// The hexagonal pixel of seed 003: 7 points, centre weight 2/8, ring
     /// points 1/8, shared with the neighbours.
     Hex7,
+    /// The hexagonal pixel of seed 003 with 19 points (1 + 6 + 12) on the
+    /// same lattice, weights nearest the seed's cone weights that are equal
+    /// energy ([`HEX19_POINTS`](crate::pixel_model::HEX19_POINTS)).
+    Hex19,
+    /// The cone filter of seed 003's survey, `R` = 1 px, as an equal-energy
+    /// splat of 16x16 samples per pixel ([`CircularFilter::Cone`]).
+    Cone,
+    /// The Gaussian of seed 003's survey, `sigma` = 1/2 px, cut at 1.5 px
+    /// ([`CircularFilter::Gaussian`]).
+    Gaussian,
+    /// The Hamming filter `(cos(pi x/W) cos(pi y/W))^e` of seed 003's
+    /// survey, `W` = 2 px, `e` = 2 ([`CircularFilter::Hamming`]).
+    Hamming,
 }
 
 /// How primitives are drawn.
@@ -463,8 +476,18 @@ pub(crate) fn walk_outline<const C: usize>(
         PixelModel::BedOfNails8 if style.antialias => 4,
         _ => 0,
     };
-    let hex = style.antialias && style.model == PixelModel::Hex7;
-    let margin = if samples > 0 || hex {
+    let hex = style.antialias && matches!(style.model, PixelModel::Hex7 | PixelModel::Hex19);
+    let circular = match style.model {
+        _ if !style.antialias => None,
+        PixelModel::Cone => Some(CircularFilter::Cone),
+        PixelModel::Gaussian => Some(CircularFilter::Gaussian),
+        PixelModel::Hamming => Some(CircularFilter::Hamming),
+        _ => None,
+    };
+    // Circular footprints reach up to 1.5 px from the pixel centre.
+    let margin = if circular.is_some() {
+        2 * crate::SUB_ONE
+    } else if samples > 0 || hex {
         crate::SUB_ONE
     } else {
         0
@@ -491,6 +514,10 @@ pub(crate) fn walk_outline<const C: usize>(
             walk_edge_aliased::<C, _>(p0, p1, orientation, rows.clone(), band);
         } else if samples > 0 {
             walk_bed_of_nails(band, p0, p1, orientation, samples, rows.clone());
+        } else if let Some(filter) = circular {
+            walk_circular(band, p0, p1, orientation, filter, rows.clone());
+        } else if hex && style.model == PixelModel::Hex19 {
+            walk_hex19(band, p0, p1, orientation, rows.clone());
         } else if hex {
             walk_hex7(band, p0, p1, orientation, rows.clone());
         } else if cells == Cells::AsCover {

@@ -12,6 +12,7 @@
 //! | `08-flicker_chart.png` | summed linear intensity and perceived brightness (with and without γ correction) of a 1x1 px square and two short lines over 16x16 sub-pixel offsets, each twice: 0.88-1.12 and 0-1.2 (module `flicker`) |
 //! | `09-objects-3d_lod-low-vs-high.png` | sphere, torus, cone, cylinder, box and a composite, lit and anti-aliased, at a low and a high level of detail (module `objects`) |
 //! | `10-lightness-filter_plain-vs-lstar-vs-rgb-blur.png` | light colourful frames (thin shapes aliased and anti-aliased, a dithered 3-bit gradient, fine Gouraud texture): plain, through seed 002's L* filter, through a 3x3 RGB box blur, and maps of the filter's L* change and of the a*/b* shift of filter and blur; the measured shifts are printed (module `lightness`) |
+//! | `11-pixel-models_box-bed-hex-cone-gauss-hamming.png` | one small scene (a thin star, a 1-px line, a sliver) drawn with each pixel model — box exact and seed-001 formula, bed-of-nails 4x4 and 8x8, hexagonal 7 and 19 points, cone, Gaussian, Hamming — magnified four times more; each label gives the summed intensity against the box model (module `models`) |
 //!
 //! Every panel is rendered band by band ([`render`]), converted to sRGB by
 //! [`lin12_to_srgb8`](crate::image::lin12_to_srgb8) (image 06 goes through
@@ -36,6 +37,7 @@ mod flicker;
 mod gamma;
 mod hidden;
 mod lightness;
+mod models;
 mod objects;
 mod oled;
 
@@ -133,7 +135,7 @@ impl std::error::Error for GalleryError {
 }
 
 /// Number of files [`write_gallery`] writes.
-pub const GALLERY_FILES: usize = 11;
+pub const GALLERY_FILES: usize = 12;
 
 /// Renders the gallery into `dir` (created if missing). `log` receives one
 /// progress line per image and one `wrote PATH (WxH)` line per file.
@@ -337,13 +339,24 @@ pub fn write_gallery(
         log,
     )?;
 
-    // (g) Hidden surfaces.
+    // (g) Pixel models.
     log(&format!(
-        "[11/{n}] hidden surfaces: none | z-buffer aliased | z-buffer AA | section"
+        "[11/{n}] pixel models: box | bed-of-nails | hexagonal | cone, gauss, hamming"
+    ));
+    let sheet = models::sheet(opts.band_rows, scale, log)?;
+    save(
+        "11-pixel-models_box-bed-hex-cone-gauss-hamming.png",
+        &sheet,
+        log,
+    )?;
+
+    // (h) Hidden surfaces.
+    log(&format!(
+        "[12/{n}] hidden surfaces: none | z-buffer aliased | z-buffer AA | section"
     ));
     let sheet = hidden::sheet(opts.band_rows, scale, log)?;
     save(
-        "11-hidden-surfaces_none-vs-zbuffer-vs-section.png",
+        "12-hidden-surfaces_none-vs-zbuffer-vs-section.png",
         &sheet,
         log,
     )?;
@@ -959,6 +972,7 @@ mod tests {
             "08-flicker",
             "09-objects-3d",
             "10-lightness-filter",
+            "11-pixel-models",
         ] {
             assert!(names.iter().any(|n| n.starts_with(prefix)), "{prefix}");
         }
