@@ -45,10 +45,11 @@
 //! `16 m (1 + m)` cover adds, 96 for `m` = 2, 192 for the Gaussian's 3 —
 //! the price of exact equal energy and zero flicker, so these are quality
 //! models. Measured with callgrind on the host (x86-64, a 240x240 frame of
-//! 288 flat triangles sharing edges, about 12 000 edge pixel-rows): 9.4 M
-//! instructions with the box model, 103.9 M cone, 102.5 M Hamming, 153.2 M
-//! Gaussian, i.e. about 7 800 (cone, Hamming) and 12 000 (Gaussian) more
-//! per edge pixel-row (bed-of-nails 8x8: 3 400; Hex19: 950). No float at
+//! 288 flat triangles sharing edges, about 12 000 edge pixel-rows; the
+//! `bench` binary of `softedge-sim`): 9.7 M instructions with the box
+//! model, 104.2 M cone, 102.8 M Hamming, 153.5 M Gaussian, i.e. about
+//! 7 800 (cone, Hamming) and 12 000 (Gaussian) more per edge pixel-row
+//! (bed-of-nails 8x8: 3 400; Hex19: 1 000). No float at
 //! run time: the `f64` below only runs in `const` evaluation. Tables:
 //! `u16` suffix sums, `48 x 49` per filter (4.7 KB each).
 

@@ -145,6 +145,47 @@ fn render_torus() -> u64 {
     sum
 }
 
+/// The pixel-model benchmark: the reference mesh's 288 triangles, flat
+/// gray (each its first vertex's colour), 240x240 in bands of 16 rows,
+/// drawn with `model`.
+#[inline(never)]
+fn render_model(model: softedge::PixelModel) -> u64 {
+    let (tris, _) = scene::<1>();
+    let style = RenderStyle {
+        antialias: true,
+        model,
+    };
+    let mut acc = vec![0i32; BandBuffer::<1>::acc_len(W, BAND_ROWS)];
+    let mut cover = vec![0i32; BandBuffer::<1>::cover_len(W, BAND_ROWS)];
+    let mut sum = 0u64;
+    for band in Bands::new(W, H, BAND_ROWS) {
+        let Ok(mut buf) = BandBuffer::<1>::new(&mut acc, &mut cover, band) else {
+            continue;
+        };
+        buf.clear([0]);
+        for t in &tris {
+            let _ = Triangle::flat(t.vertices, t.colors[0]).draw(&mut buf, &style);
+        }
+        for y in band.y0..band.y0 + i32::from(band.rows) {
+            sum += u64::from(buf.lin12(5, y).map_or(0, |v| v[0]));
+        }
+    }
+    sum
+}
+
+/// The pixel models by their scene-file names.
+const MODELS: [(&str, softedge::PixelModel); 9] = [
+    ("box", softedge::PixelModel::Box),
+    ("box-seed", softedge::PixelModel::BoxSeed),
+    ("bed4", softedge::PixelModel::BedOfNails4),
+    ("bed8", softedge::PixelModel::BedOfNails8),
+    ("hex7", softedge::PixelModel::Hex7),
+    ("hex19", softedge::PixelModel::Hex19),
+    ("cone", softedge::PixelModel::Cone),
+    ("gauss", softedge::PixelModel::Gaussian),
+    ("hamming", softedge::PixelModel::Hamming),
+];
+
 /// The hidden-surface benchmark: the same torus tilted 60° (its near tube
 /// hides part of the far inner wall: 576 triangles, about half culled),
 /// projected once per frame into a triangle store, sorted front to back,
@@ -358,6 +399,11 @@ fn main() {
             println!("checksum {}", render_torus());
             return;
         }
+        if let Some(name) = args.get(2).and_then(|a| a.strip_prefix("model-")) {
+            let model = MODELS.iter().find(|(n, _)| *n == name).map(|m| m.1);
+            println!("checksum {}", model.map_or(0, render_model));
+            return;
+        }
         if let Some(mode) = args.get(2).and_then(|a| a.strip_prefix("torus-")) {
             println!("checksum {}", render_torus_z(mode));
             return;
@@ -452,6 +498,25 @@ fn main() {
         "  drawing (edge walk {}, spans, setup) {:>10} instructions",
         n[2], n[3]
     );
+    println!("pixel models: the mesh's 288 triangles, flat gray, {W}x{H}, bands of {BAND_ROWS}:");
+    let mut box_count = 0u64;
+    for (name, _) in MODELS {
+        match callgrind("1", &format!("model-{name}"), Some("*render_model*")) {
+            Ok(v) => {
+                if name == "box" {
+                    box_count = v;
+                }
+                println!(
+                    "  {name:<9} {v:>11} instructions per frame = {:.1} x box",
+                    v as f64 / box_count.max(1) as f64
+                );
+            }
+            Err(e) => {
+                eprintln!("bench: {e}");
+                std::process::exit(1);
+            }
+        }
+    }
     println!("hidden surfaces: the torus tilted 60° (self-occluding), projected once into a triangle store, sorted, RGB, {W}x{H}, bands of {BAND_ROWS}:");
     for (mode, what) in [
         ("plain", "accumulated, no hidden-surface removal"),
