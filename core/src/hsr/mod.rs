@@ -2,7 +2,7 @@
 //! methods that keep only what is nearest.
 //!
 //! Takes [`DepthTriangle`]s (from 3D objects, [`scene3d`](crate::scene3d),
-//! or 2D primitives with depths, [`Polygon::depth_triangles`]); gives the
+//! or 2D primitives with depths, [`Polygon::depth_triangles`](crate::Polygon::depth_triangles)); gives the
 //! visible surfaces, anti-aliased, in the band's accumulator.
 //!
 //! **Depth**: `u16` per vertex, **larger is nearer** (seed 004's `z > Z`
@@ -49,8 +49,19 @@
 //! surface gets only what is left of the pixel, and the intersection line
 //! of two interpenetrating surfaces is resolved at pixel centres (aliased).
 //! The tests measure both (`tests/tests/hsr.rs`). The Weiler–Atherton
-//! method ([`weiler`](self)) makes the visible polygons disjoint first, so
+//! method ([`weiler`]) makes the visible polygons disjoint first, so
 //! the accumulation is exact at intersections too.
+//!
+//! ## Weiler–Atherton
+//!
+//! [`VisibleSet::compute`] clips the frame's triangles once per frame into
+//! disjoint visible pieces (each triangle minus the parts of the others
+//! that are nearer, interpenetration included: within two triangles the
+//! nearer region is a half-plane), whose cut vertices are shared by both
+//! sides of each cut; [`VisibleSet::draw`] accumulates them in every band
+//! with their source triangle's Gouraud plane. Exact where the visible
+//! boundaries are the triangles' own edges; elsewhere the boundary passes
+//! through vertices rounded to 1/16 px ([`weiler`] states the bound).
 //!
 //! Depth of an edge pixel: the triangle's plane at the pixel centre,
 //! clamped to the triangle's vertex depths (an extrapolated centre never
@@ -61,10 +72,12 @@
 
 mod depth_plane;
 mod section;
+pub mod weiler;
 mod zbuffer;
 
 pub use depth_plane::{DepthPlane, DEPTH_FRAC};
 pub use section::Section;
+pub use weiler::{VisiblePiece, VisibleSet, WeilerStats, PIECE_VERTICES};
 pub use zbuffer::DepthBuffer;
 pub(crate) use zbuffer::FULL;
 
@@ -85,6 +98,9 @@ pub enum HsrMethod {
     None,
     /// The z-buffer in bands, with anti-aliased edges (see above).
     ZBuffer,
+    /// Weiler–Atherton: disjoint visible pieces, accumulated exactly
+    /// ([`weiler`]).
+    WeilerAtherton,
 }
 
 /// Why a hidden-surface draw failed.
