@@ -35,7 +35,8 @@
 //!    behind everywhere (nothing to do), in front everywhere (`R_Q = Q`),
 //!    or the two interpenetrate (`R_Q = Q` cut by the pair's *depth line*).
 //!    Coplanar triangles: the earlier one (smaller index) is in front, as
-//!    in [`tests/src/visible.rs`'s reference] and the `z > Z` z-buffer.
+//!    in the tests' reference (`tests/src/visible.rs`) and the `z > Z`
+//!    z-buffer.
 //! 2. Each piece `X` is split by `R_Q`'s lines in turn (Sutherland–Hodgman
 //!    inside and outside lists, seed 004's "inside / outside" clipping):
 //!    the outside parts stay visible, the part inside all the lines is
