@@ -215,10 +215,18 @@ fn visible_pieces_are_disjoint_and_cover_the_union() {
     let (w, h) = (32u16, 32u16);
     let mut rng = Rng(0x5eed_0004);
     let (mut worst, mut worst_over, mut sum, mut count) = (0f64, 0f64, 0f64, 0usize);
+    let mut most_vertices = 0;
     for _ in 0..24 {
         let n = rng.range(3, 9) as usize;
         let tris = flat_white(&random_scene(&mut rng, n, 32, 32));
         let set = compute::<512>(&tris);
+        most_vertices = most_vertices.max(
+            set.pieces()
+                .iter()
+                .map(|p| p.vertices().len())
+                .max()
+                .unwrap_or(0),
+        );
         let frame = draw_set(&set, &tris, w, h, h, 0);
         let vs: Vec<[(i64, i64); 3]> = tris.iter().map(|t| ref_tri(t).v).collect();
         let exact = union_cover(&vs, i32::from(w), i32::from(h));
@@ -244,7 +252,7 @@ fn visible_pieces_are_disjoint_and_cover_the_union() {
         }
     }
     println!(
-        "coverage vs exact union: max {worst:.5} px, mean {:.6} px; most above one pixel {worst_over:.5}",
+        "coverage vs exact union: max {worst:.5} px, mean {:.6} px; most above one pixel {worst_over:.5}; most vertices in a piece {most_vertices}",
         sum / count as f64
     );
     // Disjoint: a pixel never holds more than one pixel of coverage, beyond
@@ -465,6 +473,9 @@ fn bad_and_degenerate_input() {
 fn piece_size_is_as_documented() {
     assert_eq!(PIECE_VERTICES, 16);
     assert_eq!(core::mem::size_of::<VisiblePiece>(), 164);
+    // Pieces and lines (24 bytes each), plus the two vectors' lengths.
+    let set = core::mem::size_of::<VisibleSet<256>>();
+    assert!(set <= 256 * (164 + 24) + 32, "{set}");
 }
 
 #[test]
@@ -521,4 +532,147 @@ fn two_interpenetrating_meshes_cover_their_union() {
     }
     println!("interior coverage: most off one pixel {worst}");
     assert!(worst <= 1.0 / 256.0, "{worst}");
+}
+
+/// Exact visible coverage (1/4096 px) of every pixel by triangle `k` of a
+/// scene of constant-depth triangles (depth `[d; 3]`, larger nearer, ties
+/// to the earlier): `T_k` minus every nearer triangle, in rationals.
+fn exact_visible(tris: &[DepthTriangle<1>], k: usize, w: i32, h: i32) -> Vec<Q> {
+    let v = |t: &DepthTriangle<1>| t.vertices.map(|p| (i64::from(p.x), i64::from(p.y)));
+    let t = &tris[k];
+    let mut parts = vec![v(t).iter().map(|p| Pt::int(p.0, p.1)).collect::<Vec<_>>()];
+    for (j, o) in tris.iter().enumerate() {
+        let nearer = o.depth[0] > t.depth[0] || (o.depth[0] == t.depth[0] && j < k);
+        if j != k && nearer {
+            parts = parts
+                .into_iter()
+                .flat_map(|p| convex_minus(p, v(o)))
+                .collect();
+        }
+    }
+    let mut cover = vec![q(0); (w * h) as usize];
+    for part in &parts {
+        for j in 0..h {
+            for i in 0..w {
+                let (x0, y0) = (16 * i64::from(i), 16 * i64::from(j));
+                let mut r = clip(part, x_at_least(x0));
+                r = clip(&r, x_at_most(x0 + 16));
+                r = clip(&r, y_at_least(y0));
+                r = clip(&r, y_at_most(y0 + 16));
+                let c = (j * w + i) as usize;
+                cover[c] += sub2_to_cover(&area(&r));
+            }
+        }
+    }
+    cover
+}
+
+#[test]
+fn constant_depth_scenes_against_the_exact_visible_area() {
+    // Issue 9 asks for 1/256 of the exact visible area per pixel for flat
+    // polygons at constant depths. Where a visible boundary is a
+    // triangle's own edge that holds; where it runs through a cut vertex
+    // (an edge crossing another), the vertex is rounded to 1/16 px and the
+    // bound is the rounding's (module doc). Measured and reported here.
+    let (w, h) = (20i32, 20i32);
+    let mut rng = Rng(0xc0de);
+    let (mut worst, mut sum, mut count, mut within) = (0f64, 0f64, 0usize, 0usize);
+    let mut worst_far = 0f64;
+    for _ in 0..12 {
+        let n = rng.range(2, 6) as usize;
+        let mut tris = random_scene(&mut rng, n, i64::from(w), i64::from(h));
+        for t in tris.iter_mut() {
+            let d = rng.range(0, 65536) as u16;
+            t.depth = [d; 3];
+        }
+        let set = compute::<256>(&tris);
+        // Cut vertices: every piece vertex that is not a triangle vertex;
+        // the piece edges they end move with them.
+        let originals: Vec<SubPoint> = tris.iter().flat_map(|t| t.vertices).collect();
+        let moved: Vec<Vec<SubPoint>> = set
+            .pieces()
+            .iter()
+            .flat_map(|p| {
+                let v = p.vertices();
+                (0..v.len())
+                    .map(|k| vec![v[k], v[(k + 1) % v.len()]])
+                    .collect::<Vec<_>>()
+            })
+            .filter(|e| e.iter().any(|v| !originals.contains(v)))
+            .collect();
+        let near_moved = edges_per_pixel(&moved, w, h);
+        for k in 0..tris.len() {
+            let only: Vec<DepthTriangle<1>> = tris
+                .iter()
+                .enumerate()
+                .map(|(j, t)| {
+                    DepthTriangle::new(t.vertices, [[if j == k { 4095 } else { 0 }]; 3], t.depth)
+                })
+                .collect();
+            let frame = draw_set(&set, &only, w as u16, h as u16, 6, 0);
+            let exact = exact_visible(&tris, k, w, h);
+            let edges = edges_per_pixel(&tri_outlines(&tris), w, h);
+            for j in 0..h {
+                for i in 0..w {
+                    let c = (j * w + i) as usize;
+                    let got = f64::from(frame.raw_at(i, j)[0]) / FULL_RAW;
+                    let err = (got - to_f64(&exact[c]) / 4096.0).abs();
+                    let e = edges[c] as f64;
+                    assert!(
+                        err <= rounding_bound(e) + ENGINE * e + 1e-9,
+                        "({i}, {j}) source {k}: {err}"
+                    );
+                    // Pixels that no edge ending in a cut vertex touches:
+                    // only the triangles' own edges bound the pieces there.
+                    if near_moved[c] == 0 {
+                        worst_far = worst_far.max(err);
+                    }
+                    worst = worst.max(err);
+                    sum += err;
+                    count += 1;
+                    within += usize::from(err <= 1.0 / 256.0);
+                }
+            }
+        }
+    }
+    println!(
+        "constant depths vs exact visible area: max {worst:.5} px, mean {:.6} px, {:.2} % of pixels within 1/256; away from edges ending in cut vertices max {worst_far:.6}",
+        sum / count as f64,
+        100.0 * within as f64 / count as f64
+    );
+    assert!(worst_far <= 1.0 / 256.0);
+}
+
+#[test]
+fn crowded_scenes_fit_and_stay_disjoint() {
+    // 30 large triangles piled up in a 24 px frame: pieces collect many
+    // cut vertices (outlines longer than PIECE_VERTICES are stored as
+    // several pieces split along a diagonal).
+    let (w, h) = (24u16, 24u16);
+    let mut rng = Rng(0xc20d);
+    let (mut most, mut worst_over, mut pieces) = (0usize, 0f64, 0usize);
+    for _ in 0..8 {
+        let tris = flat_white(&random_scene(&mut rng, 30, 24, 24));
+        let mut set = Box::new(VisibleSet::<4096>::new());
+        let stats = set.compute(&tris).expect("fits");
+        most = most.max(stats.max_vertices);
+        pieces = pieces.max(stats.pieces);
+        let frame = draw_set(&set, &tris, w, h, 8, 0);
+        let edges = edges_per_pixel(&tri_outlines(&tris), i32::from(w), i32::from(h));
+        for j in 0..i32::from(h) {
+            for i in 0..i32::from(w) {
+                let over = f64::from(frame.raw_at(i, j)[0]) / FULL_RAW - 1.0;
+                let e = edges[(j * i32::from(w) + i) as usize] as f64;
+                assert!(
+                    over <= rounding_bound(e) + ENGINE * e + 1e-9,
+                    "({i}, {j}) {over}"
+                );
+                worst_over = worst_over.max(over);
+            }
+        }
+    }
+    println!(
+        "crowded: most pieces {pieces}, most vertices {most}, most above one pixel {worst_over:.5}"
+    );
+    assert!(most <= PIECE_VERTICES);
 }
