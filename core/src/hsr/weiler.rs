@@ -118,6 +118,14 @@
 //! with both parts keeping its orientation, reports
 //! `Capacity { needed: PIECE_VERTICES + 1 }`.
 //!
+//! ## No panics
+//!
+//! Every index is a `get`, every division a `checked_div`; the magnitudes
+//! above keep every product far inside `i128`. A firmware build that
+//! calls [`VisibleSet::compute`] and [`VisibleSet::draw`] on run-time
+//! triangles links with `boards/qemu-m0 --features no-panic` (checked by
+//! hand with a temporary probe in `boards/common`, not committed).
+//!
 //! ## Cost
 //!
 //! Setup (everything in [`VisibleSet::compute`]) multiplies and divides
@@ -181,7 +189,7 @@ impl ClipLine {
         }
         let g = gcd(gcd(a.unsigned_abs(), b.unsigned_abs()), c.unsigned_abs());
         let g = i128::try_from(g).ok()?;
-        let (mut a, mut b, mut c) = (a / g, b / g, c / g);
+        let (mut a, mut b, mut c) = (a.checked_div(g)?, b.checked_div(g)?, c.checked_div(g)?);
         let mut sign = 1;
         if a < 0 || (a == 0 && b < 0) {
             a = -a;
@@ -235,14 +243,17 @@ impl ClipLine {
 /// Largest line-table size (indices are `u16`, below [`DIAGONAL`]).
 const LINE_INDEX_LIMIT: usize = DIAGONAL as usize;
 
-/// `n / d` rounded to the nearest integer, halves away from zero; `d != 0`.
+/// `n / d` rounded to the nearest integer, halves away from zero; 0 for
+/// `d = 0` (never reached: callers divide by non-zero determinants).
+/// Operands are far below `2^126` (module doc), so nothing wraps.
 fn div_round(n: i128, d: i128) -> i128 {
-    let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
-    if d == 0 {
-        return 0;
-    }
-    let q = (n.abs() + d / 2) / d;
-    if n < 0 {
+    let (nu, du) = (n.unsigned_abs(), d.unsigned_abs());
+    let q = nu
+        .checked_add(du / 2)
+        .and_then(|x| x.checked_div(du))
+        .and_then(|q| i128::try_from(q).ok())
+        .unwrap_or(0);
+    if (n < 0) != (d < 0) {
         -q
     } else {
         q
@@ -250,8 +261,8 @@ fn div_round(n: i128, d: i128) -> i128 {
 }
 
 fn gcd(mut a: u128, mut b: u128) -> u128 {
-    while b != 0 {
-        (a, b) = (b, a % b);
+    while let Some(r) = a.checked_rem(b) {
+        (a, b) = (b, r);
     }
     a
 }
@@ -315,7 +326,7 @@ impl<const V: usize> Poly<V> {
     /// Vertex `k` (cyclic) and the line of the edge leaving it.
     fn at(&self, k: usize) -> (SubPoint, u16) {
         let n = usize::from(self.len).max(1);
-        let k = k % n;
+        let k = k.checked_rem(n).unwrap_or(0);
         (
             self.vertices.get(k).copied().unwrap_or_default(),
             self.lines.get(k).copied().unwrap_or(0),
@@ -674,7 +685,7 @@ fn depth_line(a: i128, b: i128, c: i128) -> Option<(ClipLine, i8)> {
     if g == 0 {
         return None;
     }
-    let (mut a, mut b, mut c) = (a / g, b / g, c / g);
+    let (mut a, mut b, mut c) = (a.checked_div(g)?, b.checked_div(g)?, c.checked_div(g)?);
     let mut sign = 1i8;
     if a < 0 || (a == 0 && b < 0) {
         (a, b, c) = (-a, -b, -c);
