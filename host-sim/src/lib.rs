@@ -19,10 +19,11 @@
 //! - [`png_out`]: PNG encoding with the `png` crate (fast, or compact for
 //!   the committed golden images) and reading back.
 //! - [`gallery`]: the demo images of `softedge-sim gallery`.
+//! - [`memory`]: the band buffers' RAM (`softedge-sim memory`).
 //!
 //! ```
 //! use softedge::{Line, RenderStyle, SubPoint};
-//! use softedge_sim::scene::{render, Primitive, Scene};
+//! use softedge_sim::scene::{render, Hsr, Primitive, Scene};
 //!
 //! let scene = Scene::<1> {
 //!     width: 16,
@@ -35,6 +36,8 @@
 //!         SubPoint::from_px(15, 4),
 //!         [[4094], [4094]],
 //!     ))],
+//!     hsr: Hsr::None,
+//!     section: None,
 //! };
 //! let img = render(&scene).unwrap();
 //! assert_eq!(img.get(8, 3), &[2047]); // half of the 1-px line in each row
@@ -44,6 +47,7 @@
 pub mod font;
 pub mod gallery;
 pub mod image;
+pub mod memory;
 pub mod png_out;
 pub mod scene;
 pub mod scene_file;

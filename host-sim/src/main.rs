@@ -32,6 +32,12 @@ COMMANDS:
     bits --contrast K --delta D --gamma G
                 Print the levels a display needs (seed 000): N_I (eq. 9),
                 N_U (eq. 10) and m = ln K / ln(1 + D), one per line.
+    memory [--width W] [--height H] [--channels 1|3] [--rows R,R,..]
+           [--triangles N]
+                Print the RAM of the band buffers (accumulator, cover
+                scratch, z-buffer depth and coverage) for bands of each R
+                rows (default 240x240, 3 channels, rows 16,8,1), and of N
+                stored depth triangles (default 576, a torus).
     window SCENE.toml [--scale N]
                 Show the scene in a window (only with the `window` feature,
                 which needs SDL2).
@@ -81,9 +87,45 @@ fn run(args: &[String]) -> Result<(), Failure> {
         "render" => render(&args[1..]),
         "crc" => crc(&args[1..]),
         "bits" => bits(&args[1..]),
+        "memory" => memory(&args[1..]),
         "window" => window(&args[1..]),
         other => Err(Failure::Usage(format!("unknown command `{other}`"))),
     }
+}
+
+fn memory(args: &[String]) -> Result<(), Failure> {
+    let (mut w, mut h, mut ch, mut tris) = (240u16, 240u16, 3usize, 576usize);
+    let mut rows: Vec<u16> = vec![16, 8, 1];
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let mut value = |name: &str| {
+            it.next()
+                .cloned()
+                .ok_or_else(|| Failure::Usage(format!("{name} needs a value")))
+        };
+        match a.as_str() {
+            "--width" => w = number(a, &value(a)?, 1, 2048)? as u16,
+            "--height" => h = number(a, &value(a)?, 1, 2048)? as u16,
+            "--channels" => {
+                ch = match number(a, &value(a)?, 1, 3)? {
+                    1 => 1,
+                    3 => 3,
+                    _ => return Err(Failure::Usage("--channels is 1 or 3".into())),
+                }
+            }
+            "--triangles" => tris = number(a, &value(a)?, 0, 1 << 20)? as usize,
+            "--rows" => {
+                let v = value(a)?;
+                rows = v
+                    .split(',')
+                    .map(|r| number(a, r, 1, 2048).map(|n| n as u16))
+                    .collect::<Result<_, _>>()?;
+            }
+            other => return Err(Failure::Usage(format!("unknown memory option `{other}`"))),
+        }
+    }
+    print!("{}", softedge_sim::memory::report(w, h, ch, &rows, tris));
+    Ok(())
 }
 
 fn gallery(args: &[String]) -> Result<(), Failure> {

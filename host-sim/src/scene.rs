@@ -17,6 +17,9 @@
 
 use std::fmt;
 
+use softedge::hsr::{
+    draw_zbuffer, sort_front_to_back, DepthBuffer, DepthTriangle, HsrError, Section,
+};
 use softedge::postfilter::{FilterError, FilterStats, LightnessFilter, LightnessPixel};
 use softedge::{
     Band, BandBuffer, BandError, Bands, DrawError, Line, Polygon, PolygonColors, RenderStyle,
@@ -48,6 +51,10 @@ pub enum Primitive<const C: usize> {
     },
     /// A 1-px line.
     Line(Line<C>),
+    /// A triangle with a depth per vertex (3D objects, or 2D primitives
+    /// given `depths`); without hidden-surface removal it is drawn as a
+    /// plain triangle.
+    Depth(DepthTriangle<C>),
 }
 
 impl<const C: usize> Primitive<C> {
@@ -64,6 +71,7 @@ impl<const C: usize> Primitive<C> {
     pub fn draw(&self, buf: &mut BandBuffer<'_, C>, style: &RenderStyle) -> Result<(), DrawError> {
         match self {
             Self::Triangle(t) => t.draw(buf, style),
+            Self::Depth(t) => t.draw(buf, style),
             Self::Line(l) => l.draw(buf, style),
             Self::Polygon { vertices, colors } => {
                 let colors = match colors {
@@ -74,6 +82,36 @@ impl<const C: usize> Primitive<C> {
             }
         }
     }
+
+    /// The primitive as depth triangles (2D primitives without depths lie
+    /// at depth 0, the farthest); a line has no depth and no area to hide
+    /// behind: [`RenderError::LineWithHsr`] is reported by the caller.
+    fn depth_triangles(&self, out: &mut Vec<DepthTriangle<C>>) -> Result<bool, DrawError> {
+        match self {
+            Self::Triangle(t) => out.push(DepthTriangle::new(t.vertices, t.colors, [0; 3])),
+            Self::Depth(t) => out.push(*t),
+            Self::Polygon { vertices, colors } => {
+                let colors = match colors {
+                    PolyColors::Flat(c) => PolygonColors::Flat(*c),
+                    PolyColors::PerVertex(cs) => PolygonColors::PerVertex(cs),
+                };
+                let zeros = vec![0u16; vertices.len()];
+                Polygon::new(vertices, colors).depth_triangles(&zeros, |t| out.push(t))?;
+            }
+            Self::Line(_) => return Ok(false),
+        }
+        Ok(true)
+    }
+}
+
+/// Hidden-surface removal for a frame (`[render] hsr` in scene files).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Hsr {
+    /// None: primitives are accumulated in order.
+    #[default]
+    None,
+    /// The z-buffer in bands with anti-aliased edges (`softedge::hsr`).
+    ZBuffer,
 }
 
 /// A frame: size, band height, style, background and primitives.
@@ -95,6 +133,11 @@ pub struct Scene<const C: usize> {
     pub background: [u16; C],
     /// Primitives, in drawing order.
     pub primitives: Vec<Primitive<C>>,
+    /// Hidden-surface removal.
+    pub hsr: Hsr,
+    /// Section mode: draw only where surfaces cross this depth (seed 004),
+    /// as anti-aliased 1 px lines in the surfaces' colours.
+    pub section: Option<u16>,
 }
 
 impl<const C: usize> Scene<C> {
@@ -108,6 +151,8 @@ impl<const C: usize> Scene<C> {
             style: RenderStyle::default(),
             background,
             primitives: Vec::new(),
+            hsr: Hsr::None,
+            section: None,
         }
     }
 
@@ -147,6 +192,14 @@ pub enum RenderError {
     },
     /// The post-filter rejected the frame size or its buffers.
     Filter(FilterError),
+    /// Hidden-surface removal or section mode was asked for a scene with a
+    /// line (lines have no depth).
+    LineWithHsr {
+        /// Its index in [`Scene::primitives`].
+        index: usize,
+    },
+    /// A hidden-surface method failed.
+    Hsr(HsrError),
 }
 
 impl fmt::Display for RenderError {
@@ -159,6 +212,12 @@ impl fmt::Display for RenderError {
             ),
             Self::Draw { index, error } => write!(f, "primitive #{index} rejected: {error:?}"),
             Self::Filter(error) => write!(f, "lightness filter rejected the frame: {error:?}"),
+            Self::LineWithHsr { index } => write!(
+                f,
+                "primitive #{index} is a line: lines have no depth, so hidden-surface removal \
+                 and section mode take triangles, polygons and objects only"
+            ),
+            Self::Hsr(error) => write!(f, "hidden-surface removal failed: {error:?}"),
         }
     }
 }
@@ -169,37 +228,145 @@ impl std::error::Error for RenderError {}
 ///
 /// A primitive that [`draw`](Triangle::draw) rejects stops the render with
 /// [`RenderError::Draw`] (firmware could skip it; a simulator should say).
+/// With [`Scene::hsr`] or [`Scene::section`] the frame's primitives are
+/// prepared once (depth triangles sorted front to back, or section lines)
+/// and drawn into every band in the same order.
 pub fn render<const C: usize>(scene: &Scene<C>) -> Result<LinImage<C>, RenderError> {
     let (w, h) = (scene.width, scene.height);
     let rows = scene.band_rows.max(1);
+    let frame = Prepared::new(scene)?;
     let mut img = LinImage::new(u32::from(w), u32::from(h));
-    // One pair of buffers for the whole frame, as on a microcontroller.
-    let mut acc = vec![0i32; BandBuffer::<C>::acc_len(w, rows)];
-    let mut cover = vec![0i32; BandBuffer::<C>::cover_len(w, rows)];
+    // One set of buffers for the whole frame, as on a microcontroller.
+    let mut store = BandStore::<C>::new(w, rows, &frame);
     let mut row = vec![[0u16; C]; usize::from(w)];
     for band in Bands::new(w, h, rows) {
-        let mut buf = BandBuffer::<C>::new(&mut acc, &mut cover, band)
-            .map_err(|error| RenderError::Band { band, error })?;
-        draw_band(scene, &mut buf)?;
-        for y in band.y0..band.y0 + i32::from(band.rows) {
-            let n = buf.resolve_row(y, &mut row);
-            img.set_row(y as u32, &row[..n]);
-        }
+        store.draw(scene, &frame, band, |buf| {
+            for y in band.y0..band.y0 + i32::from(band.rows) {
+                let n = buf.resolve_row(y, &mut row);
+                img.set_row(y as u32, &row[..n]);
+            }
+        })?;
     }
     Ok(img)
 }
 
-/// Clears `buf` to the scene's background and draws every primitive.
-fn draw_band<const C: usize>(
-    scene: &Scene<C>,
-    buf: &mut BandBuffer<'_, C>,
-) -> Result<(), RenderError> {
-    buf.clear(scene.background);
-    for (index, p) in scene.primitives.iter().enumerate() {
-        p.draw(buf, &scene.style)
-            .map_err(|error| RenderError::Draw { index, error })?;
+/// A frame's primitives as the chosen method draws them, prepared once.
+enum Prepared<const C: usize> {
+    /// Accumulated in order.
+    Plain,
+    /// Depth triangles, front to back, through the z-buffer (with the
+    /// index of the primitive each came from).
+    ZBuffer(Vec<(DepthTriangle<C>, usize)>),
+    /// Section lines and faces, accumulated (with their primitive's index).
+    Section(Vec<(Primitive<C>, usize)>),
+}
+
+impl<const C: usize> Prepared<C> {
+    fn new(scene: &Scene<C>) -> Result<Self, RenderError> {
+        if scene.hsr == Hsr::None && scene.section.is_none() {
+            return Ok(Self::Plain);
+        }
+        let mut tris: Vec<(DepthTriangle<C>, usize)> = Vec::new();
+        let mut one = Vec::new();
+        for (index, p) in scene.primitives.iter().enumerate() {
+            one.clear();
+            match p.depth_triangles(&mut one) {
+                Ok(true) => tris.extend(one.iter().map(|&t| (t, index))),
+                Ok(false) => return Err(RenderError::LineWithHsr { index }),
+                Err(error) => return Err(RenderError::Draw { index, error }),
+            }
+        }
+        if let Some(z) = scene.section {
+            let mut out = Vec::new();
+            for (t, index) in tris {
+                match t.section(z) {
+                    Some(Section::Segment(l)) => out.push((Primitive::Line(l), index)),
+                    Some(Section::Face) => out.push((Primitive::Triangle(t.triangle()), index)),
+                    None => {}
+                }
+            }
+            return Ok(Self::Section(out));
+        }
+        // Sorted front to back once per frame (ties by content: the order
+        // does not depend on the file's order of equal-depth triangles).
+        let mut keyed: Vec<DepthTriangle<C>> = tris.iter().map(|(t, _)| *t).collect();
+        sort_front_to_back(&mut keyed);
+        let mut sorted = Vec::with_capacity(tris.len());
+        for t in keyed {
+            let index = tris.iter().find(|(u, _)| *u == t).map_or(0, |(_, i)| *i);
+            sorted.push((t, index));
+        }
+        Ok(Self::ZBuffer(sorted))
     }
-    Ok(())
+}
+
+/// The buffers of one band, reused for every band of a frame.
+struct BandStore<const C: usize> {
+    acc: Vec<i32>,
+    cover: Vec<i32>,
+    depth: Vec<u16>,
+    covered: Vec<u16>,
+}
+
+impl<const C: usize> BandStore<C> {
+    fn new(width: u16, rows: u16, frame: &Prepared<C>) -> Self {
+        let zlen = match frame {
+            Prepared::ZBuffer(_) => DepthBuffer::len(width, rows),
+            _ => 0,
+        };
+        Self {
+            acc: vec![0i32; BandBuffer::<C>::acc_len(width, rows)],
+            cover: vec![0i32; BandBuffer::<C>::cover_len(width, rows)],
+            depth: vec![0u16; zlen],
+            covered: vec![0u16; zlen],
+        }
+    }
+
+    /// Clears the band to the background, draws the frame into it and
+    /// hands the finished band to `done`.
+    fn draw(
+        &mut self,
+        scene: &Scene<C>,
+        frame: &Prepared<C>,
+        band: Band,
+        done: impl FnOnce(&BandBuffer<'_, C>),
+    ) -> Result<(), RenderError> {
+        let mut buf = BandBuffer::<C>::new(&mut self.acc, &mut self.cover, band)
+            .map_err(|error| RenderError::Band { band, error })?;
+        buf.clear(scene.background);
+        let style = &scene.style;
+        match frame {
+            Prepared::Plain => {
+                for (index, p) in scene.primitives.iter().enumerate() {
+                    p.draw(&mut buf, style)
+                        .map_err(|error| RenderError::Draw { index, error })?;
+                }
+            }
+            Prepared::Section(prims) => {
+                for (p, index) in prims {
+                    p.draw(&mut buf, style).map_err(|error| RenderError::Draw {
+                        index: *index,
+                        error,
+                    })?;
+                }
+            }
+            Prepared::ZBuffer(tris) => {
+                let mut zbuf = DepthBuffer::new(&mut self.depth, &mut self.covered, band)
+                    .map_err(|error| RenderError::Band { band, error })?;
+                let (tris, index): (Vec<_>, Vec<_>) = tris.iter().copied().unzip();
+                draw_zbuffer(&tris, &mut buf, &mut zbuf, style).map_err(|e| match e {
+                    // Vertices were checked when the frame was prepared.
+                    HsrError::Draw(error) => RenderError::Draw {
+                        index: index.first().copied().unwrap_or(0),
+                        error,
+                    },
+                    other => RenderError::Hsr(other),
+                })?;
+            }
+        }
+        done(&buf);
+        Ok(())
+    }
 }
 
 /// Renders `scene` band by band and runs the lightness filter of seed 002
@@ -240,8 +407,8 @@ where
     let halo_rows = rows.saturating_add(2);
     let filter = LightnessFilter::new(w, h).map_err(RenderError::Filter)?;
     let mut img = LinImage::new(u32::from(w), u32::from(h));
-    let mut acc = vec![0i32; BandBuffer::<C>::acc_len(w, halo_rows)];
-    let mut cover = vec![0i32; BandBuffer::<C>::cover_len(w, halo_rows)];
+    let frame = Prepared::new(scene)?;
+    let mut store = BandStore::<C>::new(w, halo_rows, &frame);
     // The band and its halo rows, resolved: the filter's input.
     let mut input = vec![[0u16; C]; usize::from(w) * usize::from(halo_rows)];
     let mut scratch = vec![0u16; LightnessFilter::scratch_len(w)];
@@ -253,15 +420,14 @@ where
             rows: band.rows.saturating_add(2),
             ..band
         };
-        let mut buf = BandBuffer::<C>::new(&mut acc, &mut cover, halo)
-            .map_err(|error| RenderError::Band { band: halo, error })?;
-        draw_band(scene, &mut buf)?;
         let n_in = usize::from(w) * usize::from(halo.rows);
-        for (r, row) in input[..n_in].chunks_exact_mut(usize::from(w)).enumerate() {
-            // Rows outside the frame are resolved too; the filter never
-            // reads them (it repeats the edge row).
-            buf.resolve_row(halo.y0 + r as i32, row);
-        }
+        store.draw(scene, &frame, halo, |buf| {
+            for (r, row) in input[..n_in].chunks_exact_mut(usize::from(w)).enumerate() {
+                // Rows outside the frame are resolved too; the filter never
+                // reads them (it repeats the edge row).
+                buf.resolve_row(halo.y0 + r as i32, row);
+            }
+        })?;
         let s = filter
             .filter_band(
                 band.y0,

@@ -50,17 +50,18 @@ pub mod window;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
+use softedge::hsr::DepthTriangle;
 use softedge::tone::{Curve, Gamma};
 use softedge::{
-    Line, PixelModel, RenderStyle, SubPoint, Triangle, COORD_LIMIT_PX, LIN_MAX,
-    MAX_POLYGON_VERTICES, SUB_ONE,
+    Line, PixelModel, Polygon, PolygonColors, RenderStyle, SubPoint, Triangle, COORD_LIMIT_PX,
+    LIN_MAX, MAX_POLYGON_VERTICES, SUB_ONE,
 };
 use toml::Spanned;
 
 pub use diag::{Diagnostic, Severity};
 pub use display::{pnm16, DisplayCodes, Linear};
 
-use crate::scene::{PolyColors, Primitive, RenderError, Scene};
+use crate::scene::{Hsr, PolyColors, Primitive, RenderError, Scene};
 use diag::Source;
 
 /// Largest frame side, pixels (the band buffer's limit).
@@ -183,16 +184,19 @@ pub fn parse(path: &Path, text: &str) -> Result<SceneFile, Diagnostic> {
         .as_ref()
         .and_then(|r| r.get_ref().lightness_filter.as_ref())
         .is_some_and(|f| *f.get_ref());
+    let (hsr, section) = ck.hsr(file.render.as_ref())?;
     let d = file.display.get_ref();
     let width = ck.int(&d.width, "display.width", 1, MAX_SIDE)? as u16;
     let height = ck.int(&d.height, "display.height", 1, MAX_SIDE)? as u16;
     let (frame, origins) = match format.channels() {
         1 => {
-            let (s, o) = ck.scene::<1>(&file, width, height, band_rows, style)?;
+            let (mut s, o) = ck.scene::<1>(&file, width, height, band_rows, style)?;
+            (s.hsr, s.section) = (hsr, section);
             (Frame::Gray(s), o)
         }
         _ => {
-            let (s, o) = ck.scene::<3>(&file, width, height, band_rows, style)?;
+            let (mut s, o) = ck.scene::<3>(&file, width, height, band_rows, style)?;
+            (s.hsr, s.section) = (hsr, section);
             (Frame::Rgb(s), o)
         }
     };
@@ -257,26 +261,47 @@ impl SceneFile {
                     field: format!("primitive #{index}"),
                     span: 0..0,
                 });
-                let what = match error {
-                    softedge::DrawError::Coord(c) => format!(
-                        "a vertex is outside ±{COORD_LIMIT_PX} px: ({}, {}) in 1/16 px",
-                        c.point.x, c.point.y
-                    ),
-                    softedge::DrawError::TooManyVertices => {
-                        format!("more than {MAX_POLYGON_VERTICES} vertices")
-                    }
-                    softedge::DrawError::ColorCount => {
-                        "per-vertex colours for a different number of vertices".into()
-                    }
-                    softedge::DrawError::SelfIntersecting => {
-                        "the polygon intersects itself (two of its edges touch or cross)".into()
-                    }
-                };
-                src.error(origin.span, origin.field, what)
+                src.error(origin.span, origin.field, draw_error_text(error))
+            }
+            RenderError::LineWithHsr { index } => {
+                let origin = self.origins.get(index).cloned().unwrap_or(Origin {
+                    field: format!("primitive #{index}"),
+                    span: 0..0,
+                });
+                src.error(
+                    origin.span,
+                    origin.field,
+                    "a line has no depth: with `[render] hsr` or `section` draw \
+                     triangles, polygons and objects only",
+                )
             }
             other => src.error(0..0, "display", other.to_string()),
         }
     }
+}
+
+/// What core's [`softedge::DrawError`] means, for a message.
+fn draw_error_text(error: softedge::DrawError) -> String {
+    match error {
+        softedge::DrawError::Coord(c) => format!(
+            "a vertex is outside ±{COORD_LIMIT_PX} px: ({}, {}) in 1/16 px",
+            c.point.x, c.point.y
+        ),
+        softedge::DrawError::TooManyVertices => {
+            format!("more than {MAX_POLYGON_VERTICES} vertices")
+        }
+        softedge::DrawError::ColorCount => {
+            "per-vertex colours or depths for a different number of vertices".into()
+        }
+        softedge::DrawError::SelfIntersecting => {
+            "the polygon intersects itself (two of its edges touch or cross)".into()
+        }
+    }
+}
+
+/// A depth in `0..=1` (larger is nearer) as a 16-bit depth, rounded.
+fn depth_code(z: f64) -> u16 {
+    (z * f64::from(u16::MAX)).round() as u16
 }
 
 /// The checks, with the source for locating errors and the warnings so far.
@@ -515,6 +540,56 @@ impl Checker<'_> {
         Ok((style, curve, rows))
     }
 
+    /// `[render] hsr` and `section` (defaults: none, off).
+    fn hsr(&self, r: Option<&Spanned<raw::Render>>) -> Checked<(Hsr, Option<u16>)> {
+        let Some(r) = r.map(Spanned::get_ref) else {
+            return Ok((Hsr::None, None));
+        };
+        let hsr = match &r.hsr {
+            None => Hsr::None,
+            Some(m) => match m.get_ref().as_str() {
+                "none" => Hsr::None,
+                "zbuffer" => Hsr::ZBuffer,
+                other => {
+                    return self.err(
+                        m.span(),
+                        "render.hsr",
+                        format!("unknown method `{other}`; one of none, zbuffer"),
+                    )
+                }
+            },
+        };
+        let section = match &r.section {
+            None => None,
+            Some(z) => Some(depth_code(self.num(z, "render.section", 0.0, 1.0)?)),
+        };
+        Ok((hsr, section))
+    }
+
+    /// `depths = [z0, z1, ...]`: one number in `0..=1` per vertex (larger
+    /// is nearer), as 16-bit depths.
+    fn depths(&self, v: &raw::Nums, field: &str, count: usize) -> Checked<Vec<u16>> {
+        let list = v.get_ref();
+        if list.len() != count {
+            return self.err(
+                v.span(),
+                field,
+                format!("takes one depth per point: {count}, not {}", list.len()),
+            );
+        }
+        list.iter()
+            .enumerate()
+            .map(|(k, z)| {
+                Ok(depth_code(self.num(
+                    z,
+                    &format!("{field}[{k}]"),
+                    0.0,
+                    1.0,
+                )?))
+            })
+            .collect()
+    }
+
     /// Everything drawn, in file order.
     fn scene<const C: usize>(
         &mut self,
@@ -550,7 +625,13 @@ impl Checker<'_> {
                 PolyColors::Flat(c) => [c; 3],
                 PolyColors::PerVertex(cs) => [cs[0], cs[1], cs[2]],
             };
-            let p = Primitive::Triangle(Triangle::new([a, b, c], colors));
+            let p = match &tr.depths {
+                None => Primitive::Triangle(Triangle::new([a, b, c], colors)),
+                Some(d) => {
+                    let z = self.depths(d, &format!("{field}.depths"), 3)?;
+                    Primitive::Depth(DepthTriangle::new([a, b, c], colors, [z[0], z[1], z[2]]))
+                }
+            };
             items.push((
                 Origin {
                     field,
@@ -580,16 +661,30 @@ impl Checker<'_> {
                 &field,
                 p.span(),
             )?;
-            let prim = Primitive::Polygon {
-                vertices: pts,
-                colors,
+            let prims = match &pr.depths {
+                None => vec![Primitive::Polygon {
+                    vertices: pts,
+                    colors,
+                }],
+                Some(d) => {
+                    let z = self.depths(d, &format!("{field}.depths"), pts.len())?;
+                    let cs = match &colors {
+                        PolyColors::Flat(c) => PolygonColors::Flat(*c),
+                        PolyColors::PerVertex(cs) => PolygonColors::PerVertex(cs),
+                    };
+                    let mut tris = Vec::new();
+                    Polygon::new(&pts, cs)
+                        .depth_triangles(&z, |t| tris.push(Primitive::Depth(t)))
+                        .or_else(|e| self.err(p.span(), &field, draw_error_text(e)))?;
+                    tris
+                }
             };
             items.push((
                 Origin {
                     field,
                     span: p.span(),
                 },
-                vec![prim],
+                prims,
             ));
         }
         for (k, l) in file.line.iter().enumerate() {
@@ -616,7 +711,17 @@ impl Checker<'_> {
                 vec![p],
             ));
         }
-        items.extend(objects::objects::<C>(self, file, width, height)?);
+        // Section mode cuts through back faces too; everything else culls them.
+        let section = file
+            .render
+            .as_ref()
+            .is_some_and(|r| r.get_ref().section.is_some());
+        let faces = if section {
+            softedge::scene3d::Faces::Both
+        } else {
+            softedge::scene3d::Faces::Front
+        };
+        items.extend(objects::objects::<C>(self, file, width, height, faces)?);
         // File order across tables (a stable sort keeps ties as read).
         items.sort_by_key(|(o, _)| o.span.start);
         let mut scene = Scene::new(width, height, background);

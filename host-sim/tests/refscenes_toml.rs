@@ -12,7 +12,9 @@ use std::process::Command;
 use softedge::scene3d::{Projection, Shape as Solid};
 use softedge::{PixelModel, SubPoint};
 use softedge_refscenes::stream::Format;
-use softedge_refscenes::{render_crc, Fill, Scene, Shape, ACC_LEN, COVER_LEN, SCENES};
+use softedge_refscenes::{
+    render_crc, Buffers, Fill, Scene, Shape, ACC_LEN, COVER_LEN, DEPTH_LEN, SCENES,
+};
 
 fn px(v: i32) -> String {
     // Sub-pixels to pixels: v / 16 is exact in binary and in decimal.
@@ -72,6 +74,9 @@ fn to_toml(scene: &Scene) -> String {
         "[render]\nantialias = {}\npixel_model = \"{model}\"\ngamma = 2.2\nband_rows = {}",
         scene.style.antialias, scene.band_rows
     );
+    if scene.zbuffer {
+        let _ = writeln!(t, "hsr = \"zbuffer\"");
+    }
     for shape in scene.shapes {
         match *shape {
             Shape::Triangle(v, c) => {
@@ -82,6 +87,20 @@ fn to_toml(scene: &Scene) -> String {
                     point(v[1]),
                     point(v[2]),
                     colors(scene, &c)
+                );
+            }
+            Shape::Depth(v, c, z) => {
+                // z / 65535 prints as the shortest f64 that rounds back to
+                // z when the scene file scales it by 65535.
+                let d: Vec<String> = z.iter().map(|&z| num(f64::from(z) / 65535.0)).collect();
+                let _ = writeln!(
+                    t,
+                    "[[triangle]]\npoints = [{}, {}, {}]\ncolors = {}\ndepths = [{}]",
+                    point(v[0]),
+                    point(v[1]),
+                    point(v[2]),
+                    colors(scene, &c),
+                    d.join(", ")
                 );
             }
             Shape::Line(a, b, c) => {
@@ -177,11 +196,18 @@ fn scene_files_of_the_reference_scenes_are_up_to_date() {
 #[test]
 fn softedge_sim_crc_of_each_reference_scene_file_equals_the_firmware_line() {
     let (mut acc, mut cover) = (vec![0i32; ACC_LEN], vec![0i32; COVER_LEN]);
+    let (mut depth, mut covered) = (vec![0u16; DEPTH_LEN], vec![0u16; DEPTH_LEN]);
+    let mut bufs = Buffers {
+        acc: &mut acc,
+        cover: &mut cover,
+        depth: &mut depth,
+        covered: &mut covered,
+    };
     for scene in SCENES {
         let expected = format!(
             "crc {} {:08x}",
             scene.name,
-            render_crc(scene, &mut acc, &mut cover).unwrap()
+            render_crc(scene, &mut bufs).unwrap()
         );
         let path = dir().join(format!("{}.toml", scene.name));
         let out = Command::new(env!("CARGO_BIN_EXE_softedge-sim"))

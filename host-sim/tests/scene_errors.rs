@@ -278,3 +278,47 @@ fn unreadable_file_is_an_error_not_a_panic() {
     assert!(err.contains("/nonexistent/scene.toml"), "{err}");
     assert!(!err.contains("panicked"), "{err}");
 }
+
+#[test]
+fn hidden_surface_keys() {
+    // Line 6: the [render] table's hsr value.
+    expect(
+        &format!("{HEAD}[render]\nhsr = \"painter\"\n"),
+        6,
+        "render.hsr",
+        "unknown method",
+    );
+    expect(
+        &format!("{HEAD}[render]\nsection = 1.5\n"),
+        6,
+        "render.section",
+        "outside",
+    );
+    expect(
+        &format!("{HEAD}[[triangle]]\npoints = [[0, 0], [4, 0], [0, 4]]\ncolor = [9]\ndepths = [0.5, 0.5]\n"),
+        8,
+        "triangle[0].depths",
+        "one depth per point",
+    );
+    expect(
+        &format!("{HEAD}[[polygon]]\npoints = [[0, 0], [4, 0], [4, 4], [0, 4]]\ncolor = [9]\ndepths = [0.5, 0.5, 0.5, 2]\n"),
+        8,
+        "polygon[0].depths[3]",
+        "outside",
+    );
+    // A line has no depth: rejected where it stands once hsr is on.
+    expect(
+        &format!("{HEAD}[render]\nhsr = \"zbuffer\"\n[[line]]\nfrom = [0, 0]\nto = [4, 4]\ncolor = [9]\n"),
+        7,
+        "line[0]",
+        "no depth",
+    );
+    expect(
+        &format!(
+            "{HEAD}{CAMERA}far = 0.01\n[[object]]\nshape = \"sphere\"\nradius = 1\ncolor = [9]\n"
+        ),
+        9,
+        "camera.far",
+        "beyond near",
+    );
+}

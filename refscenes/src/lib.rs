@@ -8,19 +8,22 @@
 //! Cortex-M3 are the bit-identity check of `DESIGN.md`.
 //!
 //! ```
-//! use softedge_refscenes::{render_crc, ACC_LEN, COVER_LEN, SCENES};
+//! use softedge_refscenes::{render_crc, Buffers, ACC_LEN, COVER_LEN, DEPTH_LEN, SCENES};
 //! let (mut acc, mut cover) = ([0i32; ACC_LEN], [0i32; COVER_LEN]);
+//! let (mut depth, mut covered) = ([0u16; DEPTH_LEN], [0u16; DEPTH_LEN]);
+//! let mut bufs = Buffers { acc: &mut acc, cover: &mut cover, depth: &mut depth, covered: &mut covered };
 //! for scene in SCENES {
-//!     let crc = render_crc(scene, &mut acc, &mut cover).unwrap();
+//!     let crc = render_crc(scene, &mut bufs).unwrap();
 //!     println!("crc {} {:08x}", scene.name, crc);
 //! }
 //! ```
 //!
 //! Buffers: a scene of `C` channels needs
 //! `BandBuffer::<C>::acc_len(width, band_rows)` and
-//! `BandBuffer::<C>::cover_len(width, band_rows)` `i32`s; [`ACC_LEN`] and
-//! [`COVER_LEN`] are the largest over [`SCENES`], so a firmware sizes its
-//! static buffers with them once.
+//! `BandBuffer::<C>::cover_len(width, band_rows)` `i32`s, and a scene with
+//! the z-buffer `DepthBuffer::len(width, band_rows)` `u16`s twice;
+//! [`ACC_LEN`], [`COVER_LEN`] and [`DEPTH_LEN`] are the largest over
+//! [`SCENES`], so a firmware sizes its static buffers with them once.
 #![no_std]
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
@@ -30,8 +33,9 @@ mod scenes;
 pub mod stream;
 
 pub use crc::{crc32, Crc32, POLY_REFLECTED, TABLE as CRC_TABLE};
-pub use scenes::{ALIASED, GOURAUD, LIMITS, LINES, MESH, ONEBIT, SEEDBOX, SPHERE3D};
+pub use scenes::{ALIASED, GOURAUD, LIMITS, LINES, MESH, ONEBIT, SEEDBOX, SPHERE3D, ZBUFFER};
 
+use softedge::hsr::{zbuffer_passes, DepthBuffer, DepthTriangle, HsrError, ZPass};
 use softedge::scene3d;
 use softedge::{
     BandBuffer, BandError, Bands, DrawError, Line, Polygon, PolygonColors, RenderStyle, SubPoint,
@@ -39,30 +43,60 @@ use softedge::{
 };
 
 /// Widest scene [`render_crc`] accepts: the resolved row lives on the
-/// stack, `MAX_SCENE_WIDTH * 3 * 2` bytes.
-pub const MAX_SCENE_WIDTH: u16 = 128;
+/// stack, `MAX_SCENE_WIDTH * 3 * 2` bytes (and the dither error row
+/// `MAX_SCENE_WIDTH * 2`; both count on a 16 KiB Cortex-M0).
+pub const MAX_SCENE_WIDTH: u16 = 96;
 
 /// Every reference scene, in the order the listings print them.
 pub const SCENES: &[&Scene] = &[
-    &GOURAUD, &MESH, &LINES, &ALIASED, &ONEBIT, &SEEDBOX, &LIMITS, &SPHERE3D,
+    &GOURAUD, &MESH, &LINES, &ALIASED, &ONEBIT, &SEEDBOX, &LIMITS, &SPHERE3D, &ZBUFFER,
 ];
 
 /// `i32`s of `acc` that every scene of [`SCENES`] fits in.
-pub const ACC_LEN: usize = max_len(SCENES, true);
+pub const ACC_LEN: usize = max_len(SCENES, Need::Acc);
 /// `i32`s of `cover` that every scene of [`SCENES`] fits in.
-pub const COVER_LEN: usize = max_len(SCENES, false);
+pub const COVER_LEN: usize = max_len(SCENES, Need::Cover);
+/// `u16`s of each of `depth` and `covered` that every scene of [`SCENES`]
+/// fits in (at least 1).
+pub const DEPTH_LEN: usize = max_len(SCENES, Need::Depth);
 
-const fn max_len(scenes: &[&Scene], acc: bool) -> usize {
-    let mut max = 0;
+#[derive(Clone, Copy)]
+enum Need {
+    Acc,
+    Cover,
+    Depth,
+}
+
+const fn max_len(scenes: &[&Scene], need: Need) -> usize {
+    let mut max = 1;
     let mut k = 0;
     while k < scenes.len() {
-        let n = scenes[k].buffer_len(acc);
+        let s = scenes[k];
+        let n = match need {
+            Need::Acc => s.buffer_len(true),
+            Need::Cover => s.buffer_len(false),
+            Need::Depth => s.depth_len(),
+        };
         if n > max {
             max = n;
         }
         k += 1;
     }
     max
+}
+
+/// The band buffers a scene is rendered into (see the crate docs for
+/// their sizes).
+#[derive(Debug)]
+pub struct Buffers<'a> {
+    /// The accumulator.
+    pub acc: &'a mut [i32],
+    /// The cover scratch.
+    pub cover: &'a mut [i32],
+    /// The z-buffer's depths (scenes with [`Scene::zbuffer`]).
+    pub depth: &'a mut [u16],
+    /// The z-buffer's coverage counts.
+    pub covered: &'a mut [u16],
 }
 
 /// A reference scene.
@@ -87,6 +121,10 @@ pub struct Scene {
     pub background: [u16; 3],
     /// What is drawn, in order.
     pub shapes: &'static [Shape],
+    /// Hidden surfaces by the z-buffer (`softedge::hsr`): the shapes are
+    /// then [`Shape::Depth`] triangles, given front to back (in the order
+    /// `softedge::hsr::sort_front_to_back` puts them, which a test checks).
+    pub zbuffer: bool,
 }
 
 impl Scene {
@@ -100,6 +138,16 @@ impl Scene {
             (3, true) => BandBuffer::<3>::acc_len(w, r),
             (3, false) => BandBuffer::<3>::cover_len(w, r),
             _ => 0,
+        }
+    }
+
+    /// `u16`s the scene needs in each of `depth` and `covered`: 0 without
+    /// the z-buffer.
+    pub const fn depth_len(&self) -> usize {
+        if self.zbuffer {
+            DepthBuffer::len(self.width, self.band_rows)
+        } else {
+            0
         }
     }
 }
@@ -125,6 +173,9 @@ pub enum Shape {
     Polygon(&'static [SubPoint], Fill),
     /// A lit 3D object, projected by `softedge::scene3d` in every band.
     Object(&'static Object3d),
+    /// A triangle with a depth per vertex (larger is nearer), for scenes
+    /// with the z-buffer.
+    Depth([SubPoint; 3], [[u16; 3]; 3], [u16; 3]),
 }
 
 /// Largest mesh a reference [`Object3d`] may have (vertices, triangles):
@@ -165,6 +216,10 @@ pub enum Error {
     Channels,
     /// Wider than [`MAX_SCENE_WIDTH`].
     TooWide,
+    /// The z-buffer failed.
+    Hsr(HsrError),
+    /// A z-buffer scene holds a shape that is not a depth triangle.
+    NotDepth,
 }
 
 impl From<BandError> for Error {
@@ -181,8 +236,8 @@ impl From<DrawError> for Error {
 
 /// Renders `scene` band by band into `acc` / `cover` and returns the
 /// CRC-32 ([`Crc32`]) of its display byte stream ([`stream::encode_row`]).
-pub fn render_crc(scene: &Scene, acc: &mut [i32], cover: &mut [i32]) -> Result<u32, Error> {
-    render_crc_rows(scene, scene.band_rows, acc, cover)
+pub fn render_crc(scene: &Scene, bufs: &mut Buffers<'_>) -> Result<u32, Error> {
+    render_crc_rows(scene, scene.band_rows, bufs)
 }
 
 /// [`render_crc`] with `band_rows` rows per band instead of the scene's
@@ -190,13 +245,12 @@ pub fn render_crc(scene: &Scene, acc: &mut [i32], cover: &mut [i32]) -> Result<u
 pub fn render_crc_rows(
     scene: &Scene,
     band_rows: u16,
-    acc: &mut [i32],
-    cover: &mut [i32],
+    bufs: &mut Buffers<'_>,
 ) -> Result<u32, Error> {
     let mut crc = Crc32::new();
     match scene.channels {
-        1 => render::<1>(scene, band_rows, acc, cover, &mut crc)?,
-        3 => render::<3>(scene, band_rows, acc, cover, &mut crc)?,
+        1 => render::<1>(scene, band_rows, bufs, &mut crc)?,
+        3 => render::<3>(scene, band_rows, bufs, &mut crc)?,
         _ => return Err(Error::Channels),
     }
     Ok(crc.finish())
@@ -206,8 +260,7 @@ pub fn render_crc_rows(
 pub fn render<const C: usize>(
     scene: &Scene,
     band_rows: u16,
-    acc: &mut [i32],
-    cover: &mut [i32],
+    bufs: &mut Buffers<'_>,
     sink: &mut impl stream::ByteSink,
 ) -> Result<(), Error> {
     if scene.width > MAX_SCENE_WIDTH {
@@ -221,12 +274,17 @@ pub fn render<const C: usize>(
     let mut err = [0i16; MAX_SCENE_WIDTH as usize];
     let mut encoder = stream::Encoder::new(scene, &mut err);
     for band in Bands::new(scene.width, scene.height, band_rows) {
-        let mut buf = BandBuffer::<C>::new(acc, cover, band)?;
+        let mut buf = BandBuffer::<C>::new(bufs.acc, bufs.cover, band)?;
         buf.clear(channels(scene.background));
-        for shape in scene.shapes {
-            match shape {
-                Shape::Object(o) => draw_object(o, scene, &mut buf)?,
-                _ => draw(shape, &mut buf, &scene.style)?,
+        if scene.zbuffer {
+            let mut zbuf = DepthBuffer::new(bufs.depth, bufs.covered, band)?;
+            draw_zbuffer(scene, &mut buf, &mut zbuf)?;
+        } else {
+            for shape in scene.shapes {
+                match shape {
+                    Shape::Object(o) => draw_object(o, scene, &mut buf)?,
+                    _ => draw(shape, &mut buf, &scene.style)?,
+                }
             }
         }
         for r in 0..band.rows {
@@ -237,6 +295,37 @@ pub fn render<const C: usize>(
         }
     }
     Ok(())
+}
+
+/// Draws a z-buffer scene's depth triangles into the band, pass by pass
+/// (the passes and order of `softedge::hsr::draw_zbuffer`, without a
+/// triangle store: the shapes are read again in each pass).
+fn draw_zbuffer<const C: usize>(
+    scene: &Scene,
+    buf: &mut BandBuffer<'_, C>,
+    zbuf: &mut DepthBuffer<'_>,
+) -> Result<(), Error> {
+    for &pass in zbuffer_passes(&scene.style) {
+        for shape in scene.shapes {
+            let Some(t) = depth_triangle::<C>(shape) else {
+                return Err(Error::NotDepth);
+            };
+            t.draw_z(buf, zbuf, &scene.style, pass)
+                .map_err(Error::Hsr)?;
+        }
+        if pass == ZPass::Centres {
+            zbuf.finish_centres();
+        }
+    }
+    Ok(())
+}
+
+/// A [`Shape::Depth`] as core's triangle with `C` channels.
+pub fn depth_triangle<const C: usize>(shape: &Shape) -> Option<DepthTriangle<C>> {
+    match *shape {
+        Shape::Depth(v, c, z) => Some(DepthTriangle::new(v, c.map(channels), z)),
+        _ => None,
+    }
 }
 
 /// The first `C` of three channels (0 past the third).
@@ -272,6 +361,8 @@ fn draw<const C: usize>(
         }
         // Drawn by `draw_object`, which needs the scene's frame.
         Shape::Object(_) => Ok(()),
+        // Without the z-buffer, a depth triangle is a plain triangle.
+        Shape::Depth(v, c, _) => Triangle::new(v, c.map(channels)).draw(buf, style),
     }
 }
 
@@ -318,14 +409,35 @@ fn draw_object<const C: usize>(
 mod tests {
     use super::*;
 
+    /// Runs `f` with buffers big enough for every scene at any band height
+    /// up to 64 rows.
+    fn with_buffers<R>(f: impl FnOnce(&mut Buffers<'_>) -> R) -> R {
+        const BIG: usize = 3 * 128 * 64;
+        let mut acc = [0i32; BIG];
+        let mut cover = [0i32; 130 * 64];
+        let (mut depth, mut covered) = ([0u16; 128 * 64], [0u16; 128 * 64]);
+        f(&mut Buffers {
+            acc: &mut acc,
+            cover: &mut cover,
+            depth: &mut depth,
+            covered: &mut covered,
+        })
+    }
+
     #[test]
     fn every_scene_renders_and_fits_the_shared_buffers() {
         let (mut acc, mut cover) = ([0i32; ACC_LEN], [0i32; COVER_LEN]);
+        let (mut depth, mut covered) = ([0u16; DEPTH_LEN], [0u16; DEPTH_LEN]);
+        let mut bufs = Buffers {
+            acc: &mut acc,
+            cover: &mut cover,
+            depth: &mut depth,
+            covered: &mut covered,
+        };
         for scene in SCENES {
             assert!(scene.width <= MAX_SCENE_WIDTH, "{}", scene.name);
             assert!(scene.buffer_len(true) > 0, "{}", scene.name);
-            render_crc(scene, &mut acc, &mut cover)
-                .unwrap_or_else(|e| panic!("{}: {e:?}", scene.name));
+            render_crc(scene, &mut bufs).unwrap_or_else(|e| panic!("{}: {e:?}", scene.name));
         }
     }
 
@@ -344,42 +456,79 @@ mod tests {
     /// whole frame as one band.
     #[test]
     fn crc_does_not_depend_on_band_height() {
-        const BIG: usize = 3 * 128 * 64;
-        let mut acc = [0i32; BIG];
-        let mut cover = [0i32; 130 * 64];
-        for scene in SCENES {
-            let own = render_crc(scene, &mut acc, &mut cover).unwrap();
-            for rows in [1, 3, scene.height] {
-                let other = render_crc_rows(scene, rows, &mut acc, &mut cover).unwrap();
-                assert_eq!(own, other, "{} with {rows} rows", scene.name);
+        with_buffers(|bufs| {
+            for scene in SCENES {
+                let own = render_crc(scene, bufs).unwrap();
+                for rows in [1, 3, scene.height] {
+                    let other = render_crc_rows(scene, rows, bufs).unwrap();
+                    assert_eq!(own, other, "{} with {rows} rows", scene.name);
+                }
             }
-        }
+        });
     }
 
     #[test]
     fn short_buffers_are_an_error_not_a_panic() {
         let (mut acc, mut cover) = ([0i32; 8], [0i32; 8]);
+        let (mut depth, mut covered) = ([0u16; 8], [0u16; 8]);
+        let mut bufs = Buffers {
+            acc: &mut acc,
+            cover: &mut cover,
+            depth: &mut depth,
+            covered: &mut covered,
+        };
         assert_eq!(
-            render_crc(&GOURAUD, &mut acc, &mut cover),
+            render_crc(&GOURAUD, &mut bufs),
             Err(Error::Band(BandError::AccTooSmall))
         );
+        with_buffers(|big| {
+            let mut bufs = Buffers {
+                acc: big.acc,
+                cover: big.cover,
+                depth: &mut depth,
+                covered: &mut covered,
+            };
+            assert_eq!(
+                render_crc(&ZBUFFER, &mut bufs),
+                Err(Error::Band(BandError::DepthTooSmall))
+            );
+        });
     }
 
     #[test]
     fn scenes_are_not_blank() {
         // A scene whose stream equals the bare background's tests nothing.
-        let (mut acc, mut cover) = ([0i32; ACC_LEN], [0i32; COVER_LEN]);
-        for scene in SCENES {
-            let blank = Scene {
-                shapes: &[],
-                ..**scene
-            };
-            assert_ne!(
-                render_crc(scene, &mut acc, &mut cover).unwrap(),
-                render_crc(&blank, &mut acc, &mut cover).unwrap(),
-                "{}",
-                scene.name
-            );
+        with_buffers(|bufs| {
+            for scene in SCENES {
+                let blank = Scene {
+                    shapes: &[],
+                    ..**scene
+                };
+                assert_ne!(
+                    render_crc(scene, bufs).unwrap(),
+                    render_crc(&blank, bufs).unwrap(),
+                    "{}",
+                    scene.name
+                );
+            }
+        });
+    }
+
+    /// The z-buffer scene lists its triangles in the order
+    /// `sort_front_to_back` gives (what the host simulator draws them in).
+    #[test]
+    fn zbuffer_shapes_are_sorted_front_to_back() {
+        extern crate std;
+        use std::vec::Vec;
+        for scene in SCENES.iter().filter(|s| s.zbuffer) {
+            let tris: Vec<DepthTriangle<3>> = scene
+                .shapes
+                .iter()
+                .map(|s| depth_triangle::<3>(s).expect("depth triangles only"))
+                .collect();
+            let mut sorted = tris.clone();
+            softedge::hsr::sort_front_to_back(&mut sorted);
+            assert_eq!(tris, sorted, "{}", scene.name);
         }
     }
 }

@@ -143,6 +143,7 @@ pub const GOURAUD: Scene = Scene {
     style: AA,
     background: [200, 300, 600],
     shapes: &GOURAUD_SHAPES,
+    zbuffer: false,
 };
 
 /// The same as [`GOURAUD`], aliased (top-left rule).
@@ -252,6 +253,7 @@ pub const MESH: Scene = Scene {
     style: AA,
     background: [0; 3],
     shapes: &MESH_SHAPES,
+    zbuffer: false,
 };
 
 // ------------------------------------------------------------------ lines
@@ -323,6 +325,7 @@ pub const LINES: Scene = Scene {
     style: AA,
     background: [0; 3],
     shapes: &LINE_SHAPES,
+    zbuffer: false,
 };
 
 // ----------------------------------------------------------------- onebit
@@ -367,17 +370,19 @@ const ONEBIT_SHAPES: [Shape; 6] = [
     ),
 ];
 
-/// Gray, for a 1-bit display once the tone stage dithers.
+/// Gray, for a 1-bit display once the tone stage dithers (bands of 6
+/// rows: the bits do not depend on it, and the Cortex-M0's RAM does).
 pub const ONEBIT: Scene = Scene {
     name: "onebit",
     width: 96,
     height: 64,
     channels: 1,
     format: Format::Binary,
-    band_rows: 8,
+    band_rows: 6,
     style: AA,
     background: [0; 3],
     shapes: &ONEBIT_SHAPES,
+    zbuffer: false,
 };
 
 // ----------------------------------------------------------------- limits
@@ -470,6 +475,7 @@ pub const LIMITS: Scene = Scene {
     style: AA,
     background: [300; 3],
     shapes: &LIMITS_SHAPES,
+    zbuffer: false,
 };
 
 /// A lit sphere (8 segments, RGB) through an orthographic camera: the 3D
@@ -507,4 +513,88 @@ pub const SPHERE3D: Scene = Scene {
         to_light: scene3d::Vec3::from_int(-1, -1, 2),
         ambient_diffuse: [600, 3400],
     })],
+    zbuffer: false,
+};
+
+/// Depth triangles of [`ZBUFFER`], front to back.
+const Z_SHAPES: [Shape; 10] = {
+    // A pyramid seen from above (apex nearest): four triangles sharing
+    // edges, Gouraud gray.
+    let apex = s(20 * S + 5, 18 * S + 9);
+    let (a, b, c, d) = (
+        s(6 * S, 5 * S + 3),
+        s(35 * S + 2, 7 * S),
+        s(33 * S + 11, 33 * S + 6),
+        s(4 * S + 9, 30 * S),
+    );
+    let (top, rim) = (50_000, 30_000);
+    // In the order sort_front_to_back gives (a test checks it).
+    [
+        // A thin sliver in front of everything.
+        Shape::Depth(
+            [
+                s(2 * S, 44 * S),
+                s(62 * S + 9, 38 * S + 2),
+                s(62 * S, 39 * S + 8),
+            ],
+            [g(F), g(F), g(F)],
+            [64_000, 64_000, 64_000],
+        ),
+        Shape::Depth([apex, a, b], [g(F), g(H), g(H)], [top, rim, rim]),
+        Shape::Depth([apex, b, c], [g(F), g(H), g(900)], [top, rim, rim]),
+        Shape::Depth([apex, d, a], [g(F), g(900), g(H)], [top, rim, rim]),
+        Shape::Depth([apex, c, d], [g(F), g(900), g(900)], [top, rim, rim]),
+        // Two triangles crossing each other (interpenetrating), with a
+        // blade leaning through the pyramid and the wall between them.
+        Shape::Depth(
+            [s(40 * S, 44 * S), s(58 * S + 6, 30 * S), s(62 * S, 47 * S)],
+            [g(2000), g(2000), g(2000)],
+            [30_000, 30_000, 20_000],
+        ),
+        Shape::Depth(
+            [
+                s(15 * S, 40 * S + 7),
+                s(58 * S + 3, 2 * S),
+                s(61 * S, 12 * S + 5),
+            ],
+            [g(3600), g(3600), g(2600)],
+            [60_000, 8_000, 8_000],
+        ),
+        Shape::Depth(
+            [
+                s(38 * S, 24 * S),
+                s(60 * S, 26 * S + 8),
+                s(46 * S + 4, 46 * S),
+            ],
+            [g(700), g(700), g(700)],
+            [10_000, 40_000, 25_000],
+        ),
+        // A far wall over the whole frame, tilted.
+        Shape::Depth(
+            [s(0, 0), s(64 * S, 48 * S), s(0, 48 * S)],
+            [g(400), g(1200), g(1200)],
+            [2_000, 1_500, 2_500],
+        ),
+        Shape::Depth(
+            [s(0, 0), s(64 * S, 0), s(64 * S, 48 * S)],
+            [g(400), g(400), g(1200)],
+            [2_000, 1_000, 1_500],
+        ),
+    ]
+};
+
+/// Hidden surfaces by the z-buffer in 2-row bands, anti-aliased: a Gouraud
+/// pyramid (a mesh seen from its apex), a blade leaning through it, two
+/// interpenetrating triangles and a sliver in front, over a tilted wall.
+pub const ZBUFFER: Scene = Scene {
+    name: "zbuffer",
+    width: 64,
+    height: 48,
+    channels: 1,
+    format: Format::Gray8,
+    band_rows: 2,
+    style: AA,
+    background: [0; 3],
+    shapes: &Z_SHAPES,
+    zbuffer: true,
 };

@@ -143,6 +143,14 @@ impl CoverageMap {
         let j_hi = (ymax.div_euclid(16) as i32).min(height - 1);
         let i_lo = (xmin.div_euclid(16) as i32).max(0);
         let i_hi = (xmax.div_euclid(16) as i32).min(width - 1);
+        if i_lo > i_hi {
+            // Wholly left or right of the frame.
+            return Self {
+                width,
+                height,
+                cover,
+            };
+        }
         for j in j_lo..=j_hi {
             let top = i64::from(j) * 16;
             let strip = clip(&clip(&pts, y_at_least(top)), y_at_most(top + 16));

@@ -21,22 +21,23 @@ mod out;
 pub mod stack;
 
 use cortex_m_semihosting::debug;
-use softedge_refscenes::{render_crc, SCENES};
+use softedge_refscenes::{render_crc, Buffers, SCENES};
 
 pub use out::Line;
 
 /// Renders and reports every scene, then exits QEMU.
 ///
-/// `acc` / `cover` are the board's band buffers, sized
-/// [`ACC_LEN`](softedge_refscenes::ACC_LEN) /
-/// [`COVER_LEN`](softedge_refscenes::COVER_LEN). `counter` is the
+/// `bufs` are the board's band buffers, sized
+/// [`ACC_LEN`](softedge_refscenes::ACC_LEN),
+/// [`COVER_LEN`](softedge_refscenes::COVER_LEN) and
+/// [`DEPTH_LEN`](softedge_refscenes::DEPTH_LEN). `counter` is the
 /// instruction counter, already started.
-pub fn run(acc: &mut [i32], cover: &mut [i32], counter: &insns::Counter) -> ! {
+pub fn run(bufs: &mut Buffers<'_>, counter: &insns::Counter) -> ! {
     let mut ok = true;
     let mut counts = [0u64; SCENES.len()];
     for (scene, count) in SCENES.iter().zip(counts.iter_mut()) {
         let t0 = counter.ticks();
-        let result = render_crc(scene, acc, cover);
+        let result = render_crc(scene, bufs);
         let t1 = counter.ticks();
         *count = counter.insns(t1.saturating_sub(t0));
         match result {

@@ -6,19 +6,27 @@
 
 use cortex_m_rt::{entry, exception};
 use softedge_board_common as fw;
-use softedge_refscenes::{ACC_LEN, COVER_LEN};
+use softedge_refscenes::{Buffers, ACC_LEN, COVER_LEN, DEPTH_LEN};
 
 #[entry]
 fn main() -> ! {
     // cortex-m-rt turns these into `&'static mut`, safely (entry runs once).
     static mut ACC: [i32; ACC_LEN] = [0; ACC_LEN];
     static mut COVER: [i32; COVER_LEN] = [0; COVER_LEN];
+    static mut DEPTH: [u16; DEPTH_LEN] = [0; DEPTH_LEN];
+    static mut COVERED: [u16; DEPTH_LEN] = [0; DEPTH_LEN];
     fw::stack::paint();
     let Some(core) = cortex_m::Peripherals::take() else {
         fw::exit(false)
     };
     let counter = fw::insns::Counter::start(core.SYST);
-    fw::run(ACC, COVER, &counter)
+    let mut bufs = Buffers {
+        acc: ACC,
+        cover: COVER,
+        depth: DEPTH,
+        covered: COVERED,
+    };
+    fw::run(&mut bufs, &counter)
 }
 
 #[exception]

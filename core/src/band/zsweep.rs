@@ -1,35 +1,35 @@
-//! The depth-tested sweep: one primitive's pixels composited against the
-//! band's depth buffer (the z-buffer of seed 004 with anti-aliased edges).
+//! The depth-tested sweeps: one primitive's pixels composited against the
+//! band's depth buffer (the z-buffer of seed 004 with anti-aliased edges;
+//! the method and its passes are described in [`hsr`](crate::hsr)).
 //!
 //! The walk has left the primitive's whole coverage in the cover scratch
 //! (edge pixels as pairs of changes), so a running sum along the row gives
 //! each pixel's coverage `S`; Gouraud intensity and depth step by one
-//! addition per pixel. Per pixel, against the stored depth `Z` and coverage
-//! `K` (see [`hsr`](crate::hsr) for why this rule):
-//!
-//! - `S` full and `z > Z`: the primitive is nearer than everything in the
-//!   pixel and hides it: the pixel becomes `I`, `K = full`, `Z = z`
-//!   (a write, shifts only);
-//! - otherwise the primitive takes what is left of the pixel:
-//!   `s = min(S, full - K)`, `acc += (I - bg) * s`, `K += s`,
-//!   `Z = max(Z, z)`: one multiply per channel for a partly covered pixel.
+//! addition per pixel. Compositing "under" what the pixel holds,
+//! `s = min(S, full - K)`, `acc += (I - bg) * s`, `K += s`, costs one
+//! multiply per channel where `s` is not a whole pixel (a shift where it is).
 
 use super::BandBuffer;
-use crate::hsr::{DepthBuffer, DepthPlane, FULL};
+use crate::hsr::{DepthBuffer, DepthPlane, ZPass, FULL};
 use crate::shade::{Plane, PLANE_FRAC};
 use crate::COVER_BITS;
 
 impl<const C: usize> BandBuffer<'_, C> {
     /// Composites the primitive whose edges were just walked (coverage only)
-    /// over frame rows `y_lo..y_hi` against `zbuf`, and clears the scratch.
+    /// over frame rows `y_lo..y_hi` against `zbuf` as `pass` says, and
+    /// clears the scratch. `slope` is the primitive's depth change across
+    /// one pixel (`|dz/dx| + |dz/dy|`, rounded up).
     #[inline(never)] // kept out of line so profiles can name it
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn sweep_depth(
         &mut self,
         y_lo: i32,
         y_hi: i32,
         plane: &Plane<C>,
         zplane: &DepthPlane,
+        slope: u16,
         zbuf: &mut DepthBuffer<'_>,
+        pass: ZPass,
     ) {
         let w = usize::from(self.band.width);
         let y_lo = y_lo.max(self.band.y0);
@@ -77,25 +77,45 @@ impl<const C: usize> BandBuffer<'_, C> {
                         zrow.get_mut(x),
                         krow.get_mut(x),
                     ) {
-                        if s_px == full && z > *zd {
-                            for ch in 0..C {
-                                px[ch] = bg[ch]
-                                    .saturating_add((v[ch] >> (PLANE_FRAC - COVER_BITS)) as i32);
-                            }
-                            *k = FULL;
-                            *zd = z;
-                        } else {
-                            let s = s_px.min(full - i32::from(*k));
-                            if s > 0 {
-                                for ch in 0..C {
-                                    let add = (v[ch] * i64::from(s)) >> PLANE_FRAC;
-                                    px[ch] = px[ch].saturating_add(add as i32);
-                                }
-                                *k += s as u16;
-                                if z > *zd {
+                        // What the pass does with this pixel: `None` skips
+                        // it, `Some(true)` replaces it, `Some(false)`
+                        // composites under it.
+                        let action = match pass {
+                            ZPass::Single => Some(s_px == full && z > *zd),
+                            ZPass::Centres => {
+                                // Aliased coverage: whole pixels only.
+                                if s_px == full && z > *zd {
                                     *zd = z;
+                                    *k = slope;
+                                }
+                                None
+                            }
+                            ZPass::Front => (z.saturating_add(slope) >= *zd).then_some(false),
+                            ZPass::Back => (z.saturating_add(slope) < *zd).then_some(false),
+                        };
+                        match action {
+                            Some(true) => {
+                                for ch in 0..C {
+                                    let lit = (v[ch] >> (PLANE_FRAC - COVER_BITS)) as i32;
+                                    px[ch] = bg[ch].saturating_add(lit);
+                                }
+                                *k = FULL;
+                                *zd = z;
+                            }
+                            Some(false) => {
+                                let s = s_px.min(full - i32::from(*k));
+                                if s > 0 {
+                                    for ch in 0..C {
+                                        let add = (v[ch] * i64::from(s)) >> PLANE_FRAC;
+                                        px[ch] = px[ch].saturating_add(add as i32);
+                                    }
+                                    *k += s as u16;
+                                    if pass == ZPass::Single && z > *zd {
+                                        *zd = z;
+                                    }
                                 }
                             }
+                            None => {}
                         }
                     }
                 }

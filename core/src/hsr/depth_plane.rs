@@ -5,10 +5,12 @@ use crate::geom::SubPoint;
 /// Fraction bits of the fine depth values the sweep steps.
 pub const DEPTH_FRAC: u32 = 16;
 
-/// Steepest depth gradient kept, in fine units per pixel: the whole depth
-/// range (65535) per pixel. A triangle steeper than that is thinner than a
-/// pixel seen along its depth gradient; it gets its mean depth, flat.
-const GRAD_LIMIT: i64 = (u16::MAX as i64) << DEPTH_FRAC;
+/// Steepest depth gradient kept, in fine units per pixel: 2^24 depth steps
+/// (256 times the whole depth range) per pixel, so `gx * di` stays below
+/// `2^53` for any pixel in the coordinate range. A triangle steeper than
+/// that is thinner than 1/256 px across its depth range; it gets its mean
+/// depth, flat (its pixels are almost all edge pixels of tiny coverage).
+const GRAD_LIMIT: i64 = 1 << (24 + DEPTH_FRAC);
 
 /// The depth of a triangle at pixel centres, `z * 2^16`, an exact integer
 /// function of the pixel address (the same bits stepped or evaluated, so
@@ -117,6 +119,14 @@ impl DepthPlane {
         self.at0 + self.gx * di + self.gy * dj
     }
 
+    /// How much the depth changes across one pixel, `|dz/dx| + |dz/dy|`,
+    /// rounded up (setup use).
+    pub fn slope(&self) -> u16 {
+        let fine = self.gx.unsigned_abs() + self.gy.unsigned_abs();
+        let whole = (fine >> DEPTH_FRAC) + 1;
+        whole.min(u64::from(u16::MAX)) as u16
+    }
+
     /// A fine value rounded to a depth and clamped to the triangle's range
     /// (per pixel: an add, a shift, two compares).
     #[inline]
@@ -166,10 +176,11 @@ mod tests {
 
     #[test]
     fn sliver_is_flat_at_the_mean_depth() {
+        // Twice the area is 1 sub-pixel²: 1/512 px² over 1875 px.
         let v = [
             SubPoint::new(0, 0),
-            SubPoint::new(1000, 0),
-            SubPoint::new(0, 1),
+            SubPoint::new(30000, 1),
+            SubPoint::new(30001, 1),
         ];
         let p = DepthPlane::triangle(v, [0, 0, 65535]).unwrap();
         assert_eq!((p.gx, p.gy), (0, 0));

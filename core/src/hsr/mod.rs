@@ -23,34 +23,73 @@
 //!
 //! Seed 000 warns that `I_acc += I * S` is exact only for polygons that do
 //! not overlap in a pixel. A z-buffer alone would alias every silhouette;
-//! accumulation alone would add hidden surfaces in. The method here:
+//! accumulation alone would add hidden surfaces in. Per pixel the band
+//! keeps, besides the depth, the coverage `K` already claimed, and a
+//! primitive's share of a pixel is composited *under* what is there:
+//! `s = min(S, 1 - K)`, `I_acc += I * s`, `K += s` (coverage saturates at
+//! a whole pixel). What is drawn first must then be what is nearest, which
+//! a sort by triangle cannot promise per pixel; [`draw_zbuffer`] therefore
+//! walks the frame's triangles in three passes per band:
 //!
-//! 1. Sort the triangles front to back once per frame
-//!    ([`sort_front_to_back`], by the sum of the vertex depths).
-//! 2. Per pixel keep, besides `Z`, the coverage `K` already claimed.
-//! 3. A primitive covering the whole pixel and nearer than everything in it
-//!    (`S = 1`, `z > Z`) replaces the pixel: the classic z-buffer, exact in
-//!    any drawing order (interpenetrating objects, cyclic overlaps).
-//! 4. Any other primitive takes what is left of the pixel:
-//!    `s = min(S, 1 - K)`, `I_acc += I * s`, `K += s`: coverage saturates
-//!    at a full pixel and later (farther) primitives are rejected by it.
+//! 1. [`ZPass::Centres`]: the plain z-buffer of seed 004 at pixel centres
+//!    (aliased walk): the nearest depth `Z_c` at each centre, less the
+//!    depth slope across one pixel of the triangle that owns it, gives the
+//!    pixel's threshold `T`.
+//! 2. [`ZPass::Front`]: anti-aliased, every fragment (a triangle's part of
+//!    a pixel: coverage `S`, colour and depth at the centre) whose depth,
+//!    plus its own slope across a pixel, reaches `T`: the surface at the
+//!    centre, its mesh neighbours, and nearer edges partly covering the
+//!    pixel.
+//! 3. [`ZPass::Back`]: the other fragments, behind the centre's surface,
+//!    which fill what the front left (the far side of a silhouette pixel).
 //!
-//! Exact cases: a mesh's triangles sharing an edge do not overlap, so their
-//! edge pixels add up to the single-polygon value (no seam, no double edge,
-//! no background showing through); a silhouette pixel of a nearer surface
-//! over a farther one that covers the whole pixel gets exactly
-//! `S * I_near + (1 - S) * I_far`. Not exact, with the error bounded by one
-//! pixel's value along the curves where it happens: (a) a pixel holding
-//! edges of two overlapping surfaces that are both partial (e.g. a
-//! silhouette crossing another silhouette): the farther one takes
-//! `min(S, 1 - K)`, as if the two did not overlap inside the pixel; (b)
-//! where the sort order is wrong (interpenetrating or cyclically overlapping
-//! triangles), a partly covering nearer edge pixel drawn after a farther
-//! surface gets only what is left of the pixel, and the intersection line
-//! of two interpenetrating surfaces is resolved at pixel centres (aliased).
-//! The tests measure both (`tests/tests/hsr.rs`). The Weiler–Atherton
-//! method ([`weiler`]) makes the visible polygons disjoint first, so
-//! the accumulation is exact at intersections too.
+//! Within each pass the triangles go front to back ([`sort_front_to_back`],
+//! once per frame, by the sum of vertex depths; the same order in every
+//! band).
+//!
+//! Exact (within the box model's 3/4096 px per edge): a mesh's triangles
+//! sharing an edge do not overlap, so their edge pixels add up to the
+//! single-polygon value (no seam, no double edge, no background showing
+//! through); a hidden surface is rejected wherever the surface at the
+//! centre is more than a pixel's depth slope in front of it, whatever the
+//! drawing order (interpenetrating objects included); a silhouette pixel of
+//! a nearer surface over a farther one gets exactly
+//! `S * I_near + (1 - S) * I_far`, whether the centre lies on the near
+//! surface (the far one comes in the back pass) or on the far one (sorted
+//! front to back).
+//!
+//! Not exact, with the error bounded by one pixel's value along the curves
+//! where it happens: (a) two partly covering fragments of the same group
+//! overlapping inside a pixel (a silhouette crossing another silhouette):
+//! the second takes `min(S, 1 - K)` as if they did not overlap; (b) where
+//! two surfaces are within one pixel's depth slope of each other at a
+//! centre (along the intersection curve of interpenetrating surfaces), both
+//! are front fragments and their sort order decides the mix; (c) a nearer
+//! partial edge over the centre's surface drawn after it in sort order gets
+//! only what is left. The tests measure these (`tests/tests/hsr.rs`). The
+//! Weiler–Atherton method ([`weiler`]) makes the visible polygons
+//! disjoint first, so the accumulation is exact at intersections too.
+//!
+//! Cost: the centres pass is an aliased walk; each anti-aliased pass walks
+//! every triangle again and composites only its group: about 2.5 times one
+//! anti-aliased accumulation. [`ZPass::Single`] is the one-pass variant
+//! (sorted, replace a pixel where a whole fragment is nearer than all of
+//! it, else composite under): cheaper, with the errors above also where a
+//! hidden fragment is drawn before the surface that hides it.
+//!
+//! Depth of a fragment: the triangle's plane at the pixel centre, clamped
+//! to the triangle's vertex depths (an extrapolated centre never claims to
+//! be nearer than its triangle is).
+//!
+//! Aliased (`RenderStyle::ALIASED`), every drawn pixel is whole and
+//! [`draw_zbuffer`] makes the single pass, which is then exactly seed 004's
+//! z-buffer in any drawing order.
+//!
+//! With [`PixelModel::BoxSeed`](crate::PixelModel::BoxSeed), a triangle's
+//! own coverage of a pixel may leave `0..1` by up to 1/8 px (the seed
+//! formula's error); clamped per triangle it no longer cancels across a
+//! mesh's shared edges: seams up to 1/8 of the contrast. The exact box
+//! model and the sampled models stay seamless.
 //!
 //! ## Weiler–Atherton
 //!
@@ -59,16 +98,10 @@
 //! that are nearer, interpenetration included: within two triangles the
 //! nearer region is a half-plane), whose cut vertices are shared by both
 //! sides of each cut; [`VisibleSet::draw`] accumulates them in every band
-//! with their source triangle's Gouraud plane. Exact where the visible
-//! boundaries are the triangles' own edges; elsewhere the boundary passes
-//! through vertices rounded to 1/16 px ([`weiler`] states the bound).
-//!
-//! Depth of an edge pixel: the triangle's plane at the pixel centre,
-//! clamped to the triangle's vertex depths (an extrapolated centre never
-//! claims to be nearer than its triangle is).
-//!
-//! Aliased (`RenderStyle::ALIASED`), every drawn pixel is full, and the
-//! rules reduce to the plain z-buffer in any order.
+//! with their source triangle's Gouraud plane, so seed 000's accumulation
+//! is exact at intersections too. Exact where the visible boundaries are
+//! the triangles' own edges; elsewhere the boundary passes through vertices
+//! rounded to 1/16 px ([`weiler`] states the bound).
 
 mod depth_plane;
 mod section;
@@ -80,6 +113,24 @@ pub use section::Section;
 pub use weiler::{VisiblePiece, VisibleSet, WeilerStats, PIECE_VERTICES};
 pub use zbuffer::DepthBuffer;
 pub(crate) use zbuffer::FULL;
+
+/// Which pass of the z-buffer a [`DepthTriangle::draw_z`] call makes (see
+/// the module documentation; [`draw_zbuffer`] runs them in order).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum ZPass {
+    /// One pass: replace a pixel where a whole fragment is nearer than all
+    /// of it, else composite under it. Exact for aliased drawing.
+    Single,
+    /// First of three: nearest depth at pixel centres (aliased walk,
+    /// nothing drawn). Call [`DepthBuffer::finish_centres`] after it.
+    Centres,
+    /// Second of three: the fragments at or in front of the centre's
+    /// surface.
+    Front,
+    /// Third of three: the fragments behind it.
+    Back,
+}
 
 use core::cmp::Ordering;
 
@@ -157,12 +208,13 @@ impl<const C: usize> DepthTriangle<C> {
         self.triangle().draw(band, style)
     }
 
-    /// Draws the triangle through the band's depth buffer (the z-buffer
-    /// method above). Draw a frame's triangles in the order
-    /// [`sort_front_to_back`] gives, the same order in every band.
+    /// Draws the triangle through the band's depth buffer: one `pass` of
+    /// the z-buffer method above. Draw a frame's triangles in the order
+    /// [`sort_front_to_back`] gives, the same order in every band and pass;
+    /// [`draw_zbuffer`] does all of it for a slice of triangles.
     ///
     /// ```
-    /// use softedge::hsr::{DepthBuffer, DepthTriangle};
+    /// use softedge::hsr::{DepthBuffer, DepthTriangle, ZPass};
     /// use softedge::{Band, BandBuffer, RenderStyle, SubPoint};
     /// let band = Band { width: 8, y0: 0, rows: 8 };
     /// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
@@ -175,8 +227,8 @@ impl<const C: usize> DepthTriangle<C> {
     /// let near = DepthTriangle::new([p(0, 0), p(4, 0), p(0, 4)], [[3000]; 3], [900; 3]);
     /// let style = RenderStyle::default();
     /// // Drawn in the wrong order: the nearer one still wins where it is whole.
-    /// far.draw_z(&mut buf, &mut zbuf, &style).unwrap();
-    /// near.draw_z(&mut buf, &mut zbuf, &style).unwrap();
+    /// far.draw_z(&mut buf, &mut zbuf, &style, ZPass::Single).unwrap();
+    /// near.draw_z(&mut buf, &mut zbuf, &style, ZPass::Single).unwrap();
     /// assert_eq!(buf.lin12(1, 1), Some([3000]));
     /// assert_eq!(buf.lin12(5, 1), Some([1000]));
     /// assert_eq!(zbuf.depth(1, 1), Some(900));
@@ -186,6 +238,7 @@ impl<const C: usize> DepthTriangle<C> {
         band: &mut BandBuffer<'_, C>,
         zbuf: &mut DepthBuffer<'_>,
         style: &RenderStyle,
+        pass: ZPass,
     ) -> Result<(), HsrError> {
         for v in self.vertices {
             v.check().map_err(DrawError::from)?;
@@ -199,8 +252,16 @@ impl<const C: usize> DepthTriangle<C> {
         ) else {
             return Ok(());
         };
-        if let Some(rows) = walk_outline(band, &self.vertices, &plane, style, Cells::AsCover) {
-            band.sweep_depth(rows.start, rows.end, &plane, &zplane, zbuf);
+        // The centres pass samples centres whatever the style.
+        let walk_style = if pass == ZPass::Centres {
+            RenderStyle::ALIASED
+        } else {
+            *style
+        };
+        let slope = zplane.slope();
+        if let Some(rows) = walk_outline(band, &self.vertices, &plane, &walk_style, Cells::AsCover)
+        {
+            band.sweep_depth(rows.start, rows.end, &plane, &zplane, slope, zbuf, pass);
         }
         Ok(())
     }
@@ -209,6 +270,62 @@ impl<const C: usize> DepthTriangle<C> {
     /// (three times the mean depth).
     pub fn depth_key(&self) -> u32 {
         self.depth.iter().map(|&z| u32::from(z)).sum()
+    }
+}
+
+/// Draws a frame's triangles into one band by the z-buffer method above:
+/// anti-aliased, the three passes (centres, front, back); aliased, the
+/// single pass. Sort the triangles once per frame first
+/// ([`sort_front_to_back`]); clear the band and the depth buffer before.
+///
+/// ```
+/// use softedge::hsr::{draw_zbuffer, sort_front_to_back, DepthBuffer, DepthTriangle};
+/// use softedge::{Band, BandBuffer, RenderStyle, SubPoint};
+/// let band = Band { width: 8, y0: 0, rows: 8 };
+/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
+/// let (mut depth, mut covered) = ([0u16; 64], [0u16; 64]);
+/// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
+/// let mut zbuf = DepthBuffer::new(&mut depth, &mut covered, band).unwrap();
+/// buf.clear([0]);
+/// let p = |x, y| SubPoint::from_px(x, y);
+/// let mut tris = [
+///     // A far wall, and a nearer triangle whose edge halves pixel (4, 1).
+///     DepthTriangle::new([p(0, 0), p(8, 0), p(0, 8)], [[1000]; 3], [100; 3]),
+///     DepthTriangle::new([p(0, 0), p(8, 0), p(8, 8)], [[1000]; 3], [100; 3]),
+///     DepthTriangle::new([p(0, 0), p(4, 0), p(4, 4)], [[3000]; 3], [900; 3]),
+/// ];
+/// sort_front_to_back(&mut tris);
+/// draw_zbuffer(&tris, &mut buf, &mut zbuf, &RenderStyle::default()).unwrap();
+/// assert_eq!(buf.lin12(3, 1), Some([3000]));
+/// assert_eq!(buf.lin12(6, 1), Some([1000]));
+/// assert_eq!(buf.lin12(2, 2), Some([2000])); // half near, half wall
+/// ```
+pub fn draw_zbuffer<const C: usize>(
+    tris: &[DepthTriangle<C>],
+    band: &mut BandBuffer<'_, C>,
+    zbuf: &mut DepthBuffer<'_>,
+    style: &RenderStyle,
+) -> Result<(), HsrError> {
+    for &pass in zbuffer_passes(style) {
+        for t in tris {
+            t.draw_z(band, zbuf, style, pass)?;
+        }
+        if pass == ZPass::Centres {
+            zbuf.finish_centres();
+        }
+    }
+    Ok(())
+}
+
+/// The passes [`draw_zbuffer`] makes for `style`, for a caller that
+/// produces its triangles again in every pass (projecting a mesh three
+/// times instead of storing it): per pass, every triangle in the same
+/// order, then [`DepthBuffer::finish_centres`] after [`ZPass::Centres`].
+pub const fn zbuffer_passes(style: &RenderStyle) -> &'static [ZPass] {
+    if style.antialias {
+        &[ZPass::Centres, ZPass::Front, ZPass::Back]
+    } else {
+        &[ZPass::Single]
     }
 }
 

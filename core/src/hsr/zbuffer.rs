@@ -69,8 +69,24 @@ impl<'a> DepthBuffer<'a> {
         }
     }
 
-    /// The nearest depth drawn at frame pixel `(x, y)`, or `None` outside
-    /// the band.
+    /// Ends the [`ZPass::Centres`](super::ZPass::Centres) pass: each
+    /// pixel's nearest centre depth becomes its threshold (less the depth
+    /// slope across a pixel of the surface there, which that pass kept in
+    /// the coverage slot) and the coverage is emptied for the drawing
+    /// passes.
+    pub fn finish_centres(&mut self) {
+        let n = Self::len(self.band.width, self.band.rows);
+        if let (Some(d), Some(c)) = (self.depth.get_mut(..n), self.covered.get_mut(..n)) {
+            for (z, k) in d.iter_mut().zip(c.iter_mut()) {
+                *z = z.saturating_sub(*k);
+                *k = 0;
+            }
+        }
+    }
+
+    /// The depth at frame pixel `(x, y)`, or `None` outside the band: the
+    /// nearest depth drawn (single pass) or the threshold of the drawing
+    /// passes (three passes).
     pub fn depth(&self, x: i32, y: i32) -> Option<u16> {
         self.depth.get(self.index(x, y)?).copied()
     }

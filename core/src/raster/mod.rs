@@ -199,7 +199,9 @@ impl<'a, const C: usize> Polygon<'a, C> {
 
     /// Accumulates the polygon into the band.
     pub fn draw(&self, band: &mut BandBuffer<'_, C>, style: &RenderStyle) -> Result<(), DrawError> {
-        let Some(p) = self.prepare(None)? else {
+        // No depths kept: the polygon path is what small-RAM firmware
+        // runs, and every byte of its stack counts there.
+        let Some(p) = self.prepare::<0>(None)? else {
             return Ok(());
         };
         let bg = band.background();
@@ -225,7 +227,7 @@ impl<'a, const C: usize> Polygon<'a, C> {
         depths: &[u16],
         mut emit: impl FnMut(crate::hsr::DepthTriangle<C>),
     ) -> Result<(), DrawError> {
-        let Some(p) = self.prepare(Some(depths))? else {
+        let Some(p) = self.prepare::<MAX_POLYGON_VERTICES>(Some(depths))? else {
             return Ok(());
         };
         p.triangles(|vertices, colors, depth| {
@@ -238,8 +240,11 @@ impl<'a, const C: usize> Polygon<'a, C> {
     }
 
     /// Checks the polygon and drops repeated vertices; `None` when nothing
-    /// is to be drawn.
-    fn prepare(&self, depths: Option<&[u16]>) -> Result<Option<Prepared<C>>, DrawError> {
+    /// is to be drawn. Keeps up to `D` depths (0: none, all read as 0).
+    fn prepare<const D: usize>(
+        &self,
+        depths: Option<&[u16]>,
+    ) -> Result<Option<Prepared<C, D>>, DrawError> {
         let v = self.vertices;
         if v.len() > MAX_POLYGON_VERTICES {
             return Err(DrawError::TooManyVertices);
@@ -289,14 +294,15 @@ impl<'a, const C: usize> Polygon<'a, C> {
     }
 }
 
-/// A checked polygon: distinct consecutive vertices, simple.
-struct Prepared<const C: usize> {
+/// A checked polygon: distinct consecutive vertices, simple; up to `D`
+/// depths (missing ones read as 0).
+struct Prepared<const C: usize, const D: usize> {
     points: heapless::Vec<SubPoint, MAX_POLYGON_VERTICES>,
     colors: heapless::Vec<[u16; C], MAX_POLYGON_VERTICES>,
-    depths: heapless::Vec<u16, MAX_POLYGON_VERTICES>,
+    depths: heapless::Vec<u16, D>,
 }
 
-impl<const C: usize> Prepared<C> {
+impl<const C: usize, const D: usize> Prepared<C, D> {
     /// Splits the polygon into triangles along its diagonals (ear clipping).
     fn triangles(
         &self,
@@ -307,7 +313,7 @@ impl<const C: usize> Prepared<C> {
                 Some((
                     *self.points.get(k)?,
                     *self.colors.get(k)?,
-                    *self.depths.get(k)?,
+                    self.depths.get(k).copied().unwrap_or(0),
                 ))
             };
             let (Some(a), Some(b), Some(c)) = (pick(idx[0]), pick(idx[1]), pick(idx[2])) else {
@@ -409,6 +415,7 @@ impl<const C: usize> Line<C> {
 
 /// Walks every edge of a closed outline sharing one plane, then sweeps its
 /// spans. The outline must be simple (or a triangle).
+#[inline(never)] // kept out of line so profiles can name it
 pub(crate) fn fill<const C: usize>(
     band: &mut BandBuffer<'_, C>,
     v: &[SubPoint],

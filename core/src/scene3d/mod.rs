@@ -241,6 +241,30 @@ pub fn project<const C: usize>(
     view: &View,
     light: &Light<C>,
     scratch: &mut [ViewVertex<C>],
+    emit: impl FnMut(ScreenTriangle<C>),
+) -> Result<ProjectStats, SceneError> {
+    project_faces(parts, object, view, light, scratch, Faces::Front, emit)
+}
+
+/// Which faces [`project_faces`] emits.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Faces {
+    /// Front faces only (back-face culling): all a closed mesh shows.
+    Front,
+    /// Front and back faces (section mode cuts through both), each emitted
+    /// counter-clockwise as seen on screen.
+    Both,
+}
+
+/// [`project`], choosing whether back faces are culled.
+pub fn project_faces<const C: usize>(
+    parts: &[Part<'_, C>],
+    object: &Transform,
+    view: &View,
+    light: &Light<C>,
+    scratch: &mut [ViewVertex<C>],
+    faces: Faces,
     mut emit: impl FnMut(ScreenTriangle<C>),
 ) -> Result<ProjectStats, SceneError> {
     let needed: usize = parts.iter().map(|p| p.mesh.vertices.len()).sum();
@@ -287,7 +311,7 @@ pub fn project<const C: usize>(
             let [Some(a), Some(b), Some(c)] = corners else {
                 continue;
             };
-            emit_triangle([a, b, c], view, &mut stats, &mut emit);
+            emit_triangle([a, b, c], view, faces, &mut stats, &mut emit);
         }
         base += part.mesh.vertices.len();
     }
@@ -343,6 +367,7 @@ fn cut<const C: usize>(inside: ClipVertex<C>, outside: ClipVertex<C>, near: i64)
 fn emit_triangle<const C: usize>(
     tri: [ViewVertex<C>; 3],
     view: &View,
+    faces: Faces,
     stats: &mut ProjectStats,
     emit: &mut impl FnMut(ScreenTriangle<C>),
 ) {
@@ -393,14 +418,19 @@ fn emit_triangle<const C: usize>(
     }
     for k in 1..len.saturating_sub(1) {
         // k + 1 < len <= 4: in range; `min` lets the compiler see it.
-        let idx = [0, k, k + 1].map(|i| i.min(3));
-        let vertices = idx.map(|i| screen[i].0);
+        let mut idx = [0, k, k + 1].map(|i| i.min(3));
         // Counter-clockwise seen from outside stays counter-clockwise as
         // seen on screen, which in y-down coordinates is a negative area2.
-        if area2(&vertices) >= 0 {
+        let a = area2(&idx.map(|i| screen[i].0));
+        if a == 0 || (a > 0 && faces == Faces::Front) {
             stats.back_facing += 1;
             continue;
         }
+        if a > 0 {
+            // A back face, kept: turned to run counter-clockwise on screen.
+            idx.swap(1, 2);
+        }
+        let vertices = idx.map(|i| screen[i].0);
         stats.emitted += 1;
         emit(ScreenTriangle {
             vertices,

@@ -145,6 +145,88 @@ fn render_torus() -> u64 {
     sum
 }
 
+/// The hidden-surface benchmark: the same torus tilted 60° (its near tube
+/// hides part of the far inner wall: 576 triangles, about half culled),
+/// projected once per frame into a triangle store, sorted front to back,
+/// then drawn band by band by `mode`: `plain` (accumulated, no hidden-
+/// surface removal), `z1` (one z-buffer pass, anti-aliased), `z3` (the
+/// three passes of `draw_zbuffer`), `zal` (aliased z-buffer).
+#[inline(never)]
+fn render_torus_z(mode: &str) -> u64 {
+    use softedge::hsr::{draw_zbuffer, sort_front_to_back, DepthBuffer, DepthTriangle, ZPass};
+    use softedge::scene3d::{
+        project_mesh, Angle, Camera, Light, Mesh, Shape, Transform, Vec3, ViewVertex, I16F16,
+    };
+    let shape = Shape::Torus {
+        major: I16F16::from_num(3),
+        minor: I16F16::from_num(1),
+        segments: 24,
+        tube_segments: 12,
+    };
+    let Ok(mesh) = Mesh::<288, 576>::new(&shape) else {
+        return 0;
+    };
+    let mut cam = Camera::orthographic(
+        Vec3::from_int(0, 0, 20),
+        Vec3::ZERO,
+        Vec3::from_int(0, 1, 0),
+        I16F16::from_num(28),
+    );
+    cam.far = I16F16::from_num(40);
+    let Ok(view) = cam.view(W, H) else {
+        return 0;
+    };
+    let light = Light::new(Vec3::from_int(-1, -2, 3), [500; 3], [3500; 3]);
+    let tilt = Transform::rotation_x(Angle::from_degrees(60));
+    let mut scratch = [ViewVertex::<3>::EMPTY; 288];
+    let mut store: Vec<DepthTriangle<3>> = Vec::with_capacity(576);
+    let _ = project_mesh(
+        mesh.as_ref(),
+        &tilt,
+        [3000, 2000, 800],
+        &view,
+        &light,
+        &mut scratch,
+        |t| store.push(t),
+    );
+    sort_front_to_back(&mut store);
+    let mut acc = vec![0i32; BandBuffer::<3>::acc_len(W, BAND_ROWS)];
+    let mut cover = vec![0i32; BandBuffer::<3>::cover_len(W, BAND_ROWS)];
+    let mut depth = vec![0u16; DepthBuffer::len(W, BAND_ROWS)];
+    let mut covered = vec![0u16; DepthBuffer::len(W, BAND_ROWS)];
+    let mut row = vec![[0u16; 3]; usize::from(W)];
+    let mut sum = 0u64;
+    for band in Bands::new(W, H, BAND_ROWS) {
+        let (Ok(mut buf), Ok(mut zbuf)) = (
+            BandBuffer::<3>::new(&mut acc, &mut cover, band),
+            DepthBuffer::new(&mut depth, &mut covered, band),
+        ) else {
+            continue;
+        };
+        buf.clear([0; 3]);
+        let aa = RenderStyle::default();
+        match mode {
+            "plain" => store.iter().for_each(|t| {
+                let _ = t.draw(&mut buf, &aa);
+            }),
+            "z1" => store.iter().for_each(|t| {
+                let _ = t.draw_z(&mut buf, &mut zbuf, &aa, ZPass::Single);
+            }),
+            "zal" => {
+                let _ = draw_zbuffer(&store, &mut buf, &mut zbuf, &RenderStyle::ALIASED);
+            }
+            _ => {
+                let _ = draw_zbuffer(&store, &mut buf, &mut zbuf, &aa);
+            }
+        }
+        for y in band.y0..band.y0 + i32::from(band.rows) {
+            buf.resolve_row(y, &mut row);
+            sum += row.iter().flatten().map(|&v| u64::from(v)).sum::<u64>();
+        }
+    }
+    sum + store.len() as u64
+}
+
 /// Renders a scene once, band by band; returns a checksum so nothing is
 /// optimised away.
 #[inline(never)]
@@ -276,6 +358,10 @@ fn main() {
             println!("checksum {}", render_torus());
             return;
         }
+        if let Some(mode) = args.get(2).and_then(|a| a.strip_prefix("torus-")) {
+            println!("checksum {}", render_torus_z(mode));
+            return;
+        }
         let sum = match args.get(1).map(String::as_str) {
             Some("3") => render_frame::<3>(fill),
             _ => render_frame::<1>(fill),
@@ -366,4 +452,22 @@ fn main() {
         "  drawing (edge walk {}, spans, setup) {:>10} instructions",
         n[2], n[3]
     );
+    println!("hidden surfaces: the torus tilted 60° (self-occluding), projected once into a triangle store, sorted, RGB, {W}x{H}, bands of {BAND_ROWS}:");
+    for (mode, what) in [
+        ("plain", "accumulated, no hidden-surface removal"),
+        ("zal", "z-buffer, aliased (one pass)"),
+        ("z1", "z-buffer, anti-aliased, one pass"),
+        ("z3", "z-buffer, anti-aliased, three passes (draw_zbuffer)"),
+    ] {
+        match callgrind("3", &format!("torus-{mode}"), Some("*render_torus_z*")) {
+            Ok(v) => println!(
+                "  {what:<52} {v:>10} instructions = {:.1} per frame pixel",
+                v as f64 / (f64::from(W) * f64::from(H))
+            ),
+            Err(e) => {
+                eprintln!("bench: {e}");
+                std::process::exit(1);
+            }
+        }
+    }
 }

@@ -34,6 +34,7 @@ use crate::scene::{render, PolyColors, Primitive, RenderError, Scene};
 mod display;
 mod flicker;
 mod gamma;
+mod hidden;
 mod lightness;
 mod objects;
 mod oled;
@@ -132,7 +133,7 @@ impl std::error::Error for GalleryError {
 }
 
 /// Number of files [`write_gallery`] writes.
-pub const GALLERY_FILES: usize = 10;
+pub const GALLERY_FILES: usize = 11;
 
 /// Renders the gallery into `dir` (created if missing). `log` receives one
 /// progress line per image and one `wrote PATH (WxH)` line per file.
@@ -332,6 +333,17 @@ pub fn write_gallery(
     let sheet = lightness_sheet(opts.band_rows, scale, log)?;
     save(
         "10-lightness-filter_plain-vs-lstar-vs-rgb-blur.png",
+        &sheet,
+        log,
+    )?;
+
+    // (g) Hidden surfaces.
+    log(&format!(
+        "[11/{n}] hidden surfaces: none | z-buffer aliased | z-buffer AA | section"
+    ));
+    let sheet = hidden::sheet(opts.band_rows, scale, log)?;
+    save(
+        "11-hidden-surfaces_none-vs-zbuffer-vs-section.png",
         &sheet,
         log,
     )?;

@@ -8,8 +8,8 @@
 //! then moved to its position.
 
 use softedge::scene3d::{
-    project_mesh, Angle, Camera, Light, MeshRef, SceneError, Shape, Transform, Vec3, Vertex,
-    ViewVertex, I16F16, MAX_PX_PER_UNIT, MAX_SEGMENTS, WORLD_LIMIT,
+    project_faces, Angle, Camera, Faces, Light, MeshRef, Part, Projection, SceneError, Shape,
+    Transform, Vec3, Vertex, ViewVertex, I16F16, MAX_PX_PER_UNIT, MAX_SEGMENTS, WORLD_LIMIT,
 };
 
 use super::{raw, Checked, Checker, Origin};
@@ -62,6 +62,7 @@ pub(super) fn objects<const C: usize>(
     file: &raw::File,
     width: u16,
     height: u16,
+    faces: Faces,
 ) -> Checked<Vec<(Origin, Vec<Primitive<C>>)>> {
     let mut out = Vec::new();
     if file.object.is_empty() {
@@ -86,7 +87,7 @@ pub(super) fn objects<const C: usize>(
         Some(u) => vec3(ck.nums::<3>(u, "camera.up", -world, world)?),
         None => Vec3::from_int(0, 1, 0),
     };
-    let camera = match c.projection.get_ref().as_str() {
+    let mut camera = match c.projection.get_ref().as_str() {
         "orthographic" => {
             let Some(s) = &c.scale else {
                 return ck.err(
@@ -117,6 +118,37 @@ pub(super) fn objects<const C: usize>(
             )
         }
     };
+    // Depth range: 16-bit depth spreads over near..far, so the default far
+    // is just beyond the scene around the target (twice the eye's
+    // distance), and a perspective camera's near plane is an eighth of that
+    // distance (perspective depth goes as near / distance).
+    let [ex, ey, ez] = ck.nums::<3>(&c.eye, "camera.eye", -world, world)?;
+    let [tx, ty, tz] = match &c.target {
+        Some(t) => ck.nums::<3>(t, "camera.target", -world, world)?,
+        None => [0.0; 3],
+    };
+    let dist = ((ex - tx).powi(2) + (ey - ty).powi(2) + (ez - tz).powi(2)).sqrt();
+    let far_max = Camera::FAR.to_num::<f64>();
+    let min = Camera::NEAR.to_num::<f64>();
+    let near = match &c.near {
+        Some(n) => ck.num(n, "camera.near", min, far_max / 2.0)?,
+        None if matches!(camera.projection, Projection::Orthographic { .. }) => min,
+        None => (dist / 8.0).clamp(min, far_max / 2.0),
+    };
+    let far = match &c.far {
+        Some(f) => ck.num(f, "camera.far", 0.0, far_max)?,
+        None => (2.0 * dist).clamp(2.0 * near, far_max),
+    };
+    if far <= near {
+        let at = c.far.as_ref().map_or(cam.span(), |f| f.span());
+        return ck.err(
+            at,
+            "camera.far",
+            format!("far ({far}) must lie beyond near ({near})"),
+        );
+    }
+    camera.near = I16F16::from_num(near);
+    camera.far = I16F16::from_num(far);
     let view = camera
         .view(width, height)
         .or_else(|e| ck.err(cam.span(), "camera", describe(e)))?;
@@ -171,9 +203,20 @@ pub(super) fn objects<const C: usize>(
         };
         let mut scratch = vec![ViewVertex::<C>::EMPTY; nv];
         let mut prims = Vec::new();
-        project_mesh(mesh, &transform, color, &view, &light, &mut scratch, |t| {
-            prims.push(Primitive::Triangle(t.triangle()))
-        })
+        let part = Part {
+            mesh,
+            transform,
+            color,
+        };
+        project_faces(
+            &[part],
+            &Transform::IDENTITY,
+            &view,
+            &light,
+            &mut scratch,
+            faces,
+            |t| prims.push(Primitive::Depth(t)),
+        )
         .or_else(|e| {
             let at = match e {
                 SceneError::ZeroDirection => "light.direction",

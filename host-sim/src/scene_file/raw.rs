@@ -88,6 +88,8 @@ pub struct Render {
     pub gamma: Option<Spanned<GammaValue>>,
     pub band_rows: Option<Int>,
     pub lightness_filter: Option<Spanned<bool>>,
+    pub hsr: Option<Spanned<String>>,
+    pub section: Option<Num>,
 }
 
 /// `[[triangle]]`.
@@ -97,6 +99,7 @@ pub struct Triangle {
     pub points: Spanned<Vec<Nums>>,
     pub colors: Option<Colors>,
     pub color: Option<Color>,
+    pub depths: Option<Nums>,
 }
 
 /// `[[polygon]]`.
@@ -106,6 +109,7 @@ pub struct Polygon {
     pub points: Spanned<Vec<Nums>>,
     pub colors: Option<Colors>,
     pub color: Option<Color>,
+    pub depths: Option<Nums>,
 }
 
 /// `[[line]]`.
@@ -128,6 +132,8 @@ pub struct Camera {
     pub up: Option<Nums>,
     pub scale: Option<Num>,
     pub fov_y: Option<Num>,
+    pub near: Option<Num>,
+    pub far: Option<Num>,
 }
 
 /// `[light]`.
