@@ -134,8 +134,9 @@
 //! box tests, exact work only for overlapping pairs); conforming scans,
 //! for every piece edge, the vertices of all pieces (`O(E * V)`, with a
 //! box test first): 25 ms on a desktop for 530 triangles cutting each
-//! other (`tests/tests/weiler.rs`). Stack: about 1.5 KiB (a few pieces in
-//! flight).
+//! other (`tests/tests/weiler.rs`). Stack: about 3 KiB, estimated from
+//! the outlines in flight while one piece is clipped (up to six 324-byte
+//! working outlines and three 164-byte pieces); not measured on a board.
 
 use heapless::Vec;
 
@@ -538,7 +539,8 @@ pub struct WeilerStats {
     pub lines: usize,
     /// Ordered pairs of triangles where one hides part of the other.
     pub occlusions: usize,
-    /// Pairs that interpenetrate (cut along their depth line).
+    /// Pairs (counted once) found interpenetrating, so cut along their
+    /// depth line.
     pub interpenetrating: usize,
     /// Vertices inserted by conforming (step 3).
     pub conformed: usize,
@@ -744,9 +746,10 @@ impl<const N: usize> VisibleSet<N> {
     /// frame; the module doc has the algorithm).
     ///
     /// Errors: a vertex outside the coordinate range,
-    /// [`HsrError::Draw`]; more pieces or clip lines than `N` (or a piece
-    /// of more than [`PIECE_VERTICES`] vertices, or more than `u16::MAX`
-    /// triangles), [`HsrError::Capacity`]. After an error the set is empty.
+    /// [`HsrError::Draw`]; more pieces or clip lines than `N`, more than
+    /// `u16::MAX` triangles, or an outline that cannot be stored (module
+    /// doc, Storage): [`HsrError::Capacity`]. After an error the set is
+    /// empty.
     /// Triangles of zero area are skipped (they draw nothing, as in
     /// [`Triangle::draw`](crate::Triangle::draw)).
     pub fn compute<const C: usize>(
