@@ -2,7 +2,7 @@
 //! methods that keep only what is nearest.
 //!
 //! Takes [`DepthTriangle`]s (from 3D objects, [`scene3d`](crate::scene3d),
-//! or 2D primitives with depths, [`Polygon::depth_triangles`]); gives the
+//! or 2D primitives with depths, [`Polygon::depth_triangles`](crate::Polygon::depth_triangles)); gives the
 //! visible surfaces, anti-aliased, in the band's accumulator.
 //!
 //! **Depth**: `u16` per vertex, **larger is nearer** (seed 004's `z > Z`
@@ -67,7 +67,7 @@
 //! are front fragments and their sort order decides the mix; (c) a nearer
 //! partial edge over the centre's surface drawn after it in sort order gets
 //! only what is left. The tests measure these (`tests/tests/hsr.rs`). The
-//! Weiler–Atherton method ([`weiler`](self)) makes the visible polygons
+//! Weiler–Atherton method ([`weiler`]) makes the visible polygons
 //! disjoint first, so the accumulation is exact at intersections too.
 //!
 //! Cost: the centres pass is an aliased walk; each anti-aliased pass walks
@@ -90,13 +90,27 @@
 //! formula's error); clamped per triangle it no longer cancels across a
 //! mesh's shared edges: seams up to 1/8 of the contrast. The exact box
 //! model and the sampled models stay seamless.
+//!
+//! ## Weiler–Atherton
+//!
+//! [`VisibleSet::compute`] clips the frame's triangles once per frame into
+//! disjoint visible pieces (each triangle minus the parts of the others
+//! that are nearer, interpenetration included: within two triangles the
+//! nearer region is a half-plane), whose cut vertices are shared by both
+//! sides of each cut; [`VisibleSet::draw`] accumulates them in every band
+//! with their source triangle's Gouraud plane, so seed 000's accumulation
+//! is exact at intersections too. Exact where the visible boundaries are
+//! the triangles' own edges; elsewhere the boundary passes through vertices
+//! rounded to 1/16 px ([`weiler`] states the bound).
 
 mod depth_plane;
 mod section;
+pub mod weiler;
 mod zbuffer;
 
 pub use depth_plane::{DepthPlane, DEPTH_FRAC};
 pub use section::Section;
+pub use weiler::{VisiblePiece, VisibleSet, WeilerStats, PIECE_VERTICES};
 pub use zbuffer::DepthBuffer;
 pub(crate) use zbuffer::FULL;
 
@@ -135,6 +149,9 @@ pub enum HsrMethod {
     None,
     /// The z-buffer in bands, with anti-aliased edges (see above).
     ZBuffer,
+    /// Weiler–Atherton: disjoint visible pieces, accumulated exactly
+    /// ([`weiler`]).
+    WeilerAtherton,
 }
 
 /// Why a hidden-surface draw failed.
