@@ -18,7 +18,7 @@
 use std::fmt;
 
 use softedge::hsr::{
-    draw_zbuffer, sort_front_to_back, DepthBuffer, DepthTriangle, HsrError, Section,
+    draw_zbuffer, sort_front_to_back, DepthBuffer, DepthTriangle, HsrError, Section, VisibleSet,
 };
 use softedge::postfilter::{FilterError, FilterStats, LightnessFilter, LightnessPixel};
 use softedge::{
@@ -112,7 +112,15 @@ pub enum Hsr {
     None,
     /// The z-buffer in bands with anti-aliased edges (`softedge::hsr`).
     ZBuffer,
+    /// Weiler–Atherton: disjoint visible polygons computed once per frame
+    /// (`softedge::hsr::weiler`), then accumulated exactly.
+    WeilerAtherton,
 }
+
+/// Most visible pieces (and clip lines) the simulator's Weiler–Atherton
+/// stores per frame: 4096, about 770 KB on the host (a firmware chooses
+/// its own `N`; 164 bytes per piece, 24 per line).
+pub const WEILER_CAPACITY: usize = 4096;
 
 /// A frame: size, band height, style, background and primitives.
 ///
@@ -259,6 +267,8 @@ enum Prepared<const C: usize> {
     ZBuffer(Vec<(DepthTriangle<C>, usize)>),
     /// Section lines and faces, accumulated (with their primitive's index).
     Section(Vec<(Primitive<C>, usize)>),
+    /// Weiler–Atherton's visible pieces of the frame's depth triangles.
+    Weiler(Vec<DepthTriangle<C>>, Box<VisibleSet<WEILER_CAPACITY>>),
 }
 
 impl<const C: usize> Prepared<C> {
@@ -286,6 +296,12 @@ impl<const C: usize> Prepared<C> {
                 }
             }
             return Ok(Self::Section(out));
+        }
+        if scene.hsr == Hsr::WeilerAtherton {
+            let tris: Vec<DepthTriangle<C>> = tris.iter().map(|(t, _)| *t).collect();
+            let mut set = Box::new(VisibleSet::new());
+            set.compute(&tris).map_err(RenderError::Hsr)?;
+            return Ok(Self::Weiler(tris, set));
         }
         // Sorted front to back once per frame (ties by content: the order
         // does not depend on the file's order of equal-depth triangles).
@@ -349,6 +365,9 @@ impl<const C: usize> BandStore<C> {
                         error,
                     })?;
                 }
+            }
+            Prepared::Weiler(tris, set) => {
+                set.draw(tris, &mut buf, style).map_err(RenderError::Hsr)?;
             }
             Prepared::ZBuffer(tris) => {
                 let mut zbuf = DepthBuffer::new(&mut self.depth, &mut self.covered, band)

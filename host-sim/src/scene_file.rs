@@ -542,11 +542,12 @@ impl Checker<'_> {
             Some(m) => match m.get_ref().as_str() {
                 "none" => Hsr::None,
                 "zbuffer" => Hsr::ZBuffer,
+                "weiler-atherton" => Hsr::WeilerAtherton,
                 other => {
                     return self.err(
                         m.span(),
                         "render.hsr",
-                        format!("unknown method `{other}`; one of none, zbuffer"),
+                        format!("unknown method `{other}`; one of none, zbuffer, weiler-atherton"),
                     )
                 }
             },

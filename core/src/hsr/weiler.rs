@@ -1127,8 +1127,10 @@ impl<const N: usize> VisibleSet<N> {
         let bg = band.background();
         for piece in &self.pieces {
             let b = piece.0.bbox();
-            // One pixel of margin for the filters that reach beyond a pixel.
-            if (b[3] >> SUB_BITS) + 1 < y0 || (b[1] >> SUB_BITS) > y1 {
+            // Two pixels of margin: the circular pixel models reach 1.5 px
+            // beyond a pixel (the edge engine clips to the band itself;
+            // this only skips pieces that cannot touch it).
+            if (b[3] >> SUB_BITS) + 2 < y0 || (b[1] >> SUB_BITS) - 2 > y1 {
                 continue;
             }
             let t = tris.get(piece.source()).ok_or(HsrError::Capacity {

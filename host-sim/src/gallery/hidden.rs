@@ -2,7 +2,9 @@
 //! `examples/scenes/hidden_surfaces.toml`: a tilted torus, a sphere cutting
 //! into it, a cylinder through its hole and a card with per-corner depths
 //! slicing through the ring; without hidden-surface removal, with the
-//! z-buffer aliased and anti-aliased, and the section at depth 0.5.
+//! z-buffer aliased and anti-aliased, with Weiler–Atherton's disjoint
+//! visible polygons (anti-aliased intersection curves too), and the
+//! section at depth 0.5.
 
 use std::path::Path;
 
@@ -41,16 +43,21 @@ pub(super) fn variants(band_rows: u16) -> Result<Vec<(&'static str, Scene<3>)>, 
         ..z.clone()
     };
     let aliased = z.with_style(RenderStyle::ALIASED);
+    let weiler = Scene {
+        hsr: Hsr::WeilerAtherton,
+        ..z.clone()
+    };
     let section = scene("section.toml", SECTION)?.with_band_rows(band_rows);
     Ok(vec![
         ("NO HSR: SURFACES ADD", none),
         ("Z-BUFFER, ALIASED", aliased),
         ("Z-BUFFER, ANTI-ALIASED", z),
+        ("WEILER-ATHERTON", weiler),
         ("SECTION AT DEPTH 0.5", section),
     ])
 }
 
-/// The sheet: the variants side by side, two per row.
+/// The sheet: the variants side by side, three per row.
 pub(super) fn sheet(
     band_rows: u16,
     scale: u32,
@@ -72,12 +79,12 @@ pub(super) fn sheet(
     }
     let mut rows = Vec::new();
     while !panels.is_empty() {
-        let rest = panels.split_off(panels.len().min(2));
+        let rest = panels.split_off(panels.len().min(3));
         rows.push(panels);
         panels = rest;
     }
     Ok(compose(
-        "HIDDEN SURFACES (SEED 004): NONE / Z-BUFFER ALIASED / Z-BUFFER AA / SECTION",
+        "HIDDEN SURFACES (SEED 004): NONE / Z-BUFFER / WEILER-ATHERTON / SECTION",
         &rows,
     ))
 }
