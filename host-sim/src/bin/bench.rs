@@ -191,10 +191,13 @@ const MODELS: [(&str, softedge::PixelModel); 9] = [
 /// projected once per frame into a triangle store, sorted front to back,
 /// then drawn band by band by `mode`: `plain` (accumulated, no hidden-
 /// surface removal), `z1` (one z-buffer pass, anti-aliased), `z3` (the
-/// three passes of `draw_zbuffer`), `zal` (aliased z-buffer).
+/// three passes of `draw_zbuffer`), `zal` (aliased z-buffer), `wa`
+/// (Weiler–Atherton's visible pieces, computed once, drawn per band).
 #[inline(never)]
 fn render_torus_z(mode: &str) -> u64 {
-    use softedge::hsr::{draw_zbuffer, sort_front_to_back, DepthBuffer, DepthTriangle, ZPass};
+    use softedge::hsr::{
+        draw_zbuffer, sort_front_to_back, DepthBuffer, DepthTriangle, VisibleSet, ZPass,
+    };
     use softedge::scene3d::{
         project_mesh, Angle, Camera, Light, Mesh, Shape, Transform, Vec3, ViewVertex, I16F16,
     };
@@ -231,6 +234,11 @@ fn render_torus_z(mode: &str) -> u64 {
         |t| store.push(t),
     );
     sort_front_to_back(&mut store);
+    // Weiler–Atherton: the visible pieces, once per frame.
+    let mut pieces: Box<VisibleSet<2048>> = Box::default();
+    if mode == "wa" && pieces.compute(&store).is_err() {
+        return 0;
+    }
     let mut acc = vec![0i32; BandBuffer::<3>::acc_len(W, BAND_ROWS)];
     let mut cover = vec![0i32; BandBuffer::<3>::cover_len(W, BAND_ROWS)];
     let mut depth = vec![0u16; DepthBuffer::len(W, BAND_ROWS)];
@@ -255,6 +263,9 @@ fn render_torus_z(mode: &str) -> u64 {
             }),
             "zal" => {
                 let _ = draw_zbuffer(&store, &mut buf, &mut zbuf, &RenderStyle::ALIASED);
+            }
+            "wa" => {
+                let _ = pieces.draw(&store, &mut buf, &aa);
             }
             _ => {
                 let _ = draw_zbuffer(&store, &mut buf, &mut zbuf, &aa);
@@ -523,6 +534,10 @@ fn main() {
         ("zal", "z-buffer, aliased (one pass)"),
         ("z1", "z-buffer, anti-aliased, one pass"),
         ("z3", "z-buffer, anti-aliased, three passes (draw_zbuffer)"),
+        (
+            "wa",
+            "Weiler-Atherton (pieces once per frame, drawn per band)",
+        ),
     ] {
         match callgrind("3", &format!("torus-{mode}"), Some("*render_torus_z*")) {
             Ok(v) => println!(
