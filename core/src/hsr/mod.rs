@@ -2,7 +2,7 @@
 //! methods that keep only what is nearest.
 //!
 //! Takes [`DepthTriangle`]s (from 3D objects, [`scene3d`](crate::scene3d),
-//! or 2D primitives with depths, [`Polygon::depth_triangles`]); gives the
+//! or 2D primitives with depths, [`Polygon::depth_triangles`](crate::Polygon::depth_triangles)); gives the
 //! visible surfaces, anti-aliased, in the band's accumulator.
 //!
 //! **Depth**: `u16` per vertex, **larger is nearer** (seed 004's `z > Z`
@@ -58,13 +58,29 @@
 //!
 //! Aliased (`RenderStyle::ALIASED`), every drawn pixel is full, and the
 //! rules reduce to the plain z-buffer in any order.
+//!
+//! ## Warnock's subdivision
+//!
+//! [`draw_warnock`] splits the screen into a fixed quadtree of windows
+//! (seed 004, rules 1-6): a window is drawn when nothing overlaps it, or
+//! when, behind everything visible in it, one surface (or the background)
+//! surrounds it and the visible rest are triangles in front of it that do
+//! not overlap one another; each then shows its exact area. Windows larger
+//! than a pixel are drawn only when filled by one surface; edges are
+//! resolved by area in pixel windows, or below them down to 1/16 px (the
+//! vertex grid), where a window still not simple goes to the surface
+//! nearest at its centre (1/256 px each). Depth comparisons are exact, the
+//! candidate lists live in caller scratch, and the frame does not depend on
+//! the band height. Accuracy, storage and cost: [`draw_warnock`].
 
 mod depth_plane;
 mod section;
+mod warnock;
 mod zbuffer;
 
 pub use depth_plane::{DepthPlane, DEPTH_FRAC};
 pub use section::Section;
+pub use warnock::{draw_warnock, scratch_len, WarnockStats, LEVELS, MAX_PARTIAL, ROOT_LOG2_SUB};
 pub use zbuffer::DepthBuffer;
 pub(crate) use zbuffer::FULL;
 
@@ -85,6 +101,8 @@ pub enum HsrMethod {
     None,
     /// The z-buffer in bands, with anti-aliased edges (see above).
     ZBuffer,
+    /// Warnock's subdivision, edges resolved by area ([`draw_warnock`]).
+    Warnock,
 }
 
 /// Why a hidden-surface draw failed.
