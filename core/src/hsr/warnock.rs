@@ -601,6 +601,17 @@ impl<const C: usize> Walk<'_, '_, '_, '_, C> {
                 s = Some((idx, g));
             }
         }
+        // Without a surrounding triangle nothing can be dropped: more
+        // candidates than P may hold must be split.
+        if s.is_none() && len > MAX_PARTIAL {
+            return if w.log == 0 {
+                self.stats.sampled = self.stats.sampled.saturating_add(1);
+                self.sample(w, start, end);
+                Outcome::Done
+            } else {
+                Outcome::Split(len)
+            };
+        }
         // Drop what S hides; collect P, the rest.
         let mut p: heapless::Vec<(u16, Geo), MAX_PARTIAL> = heapless::Vec::new();
         let mut simple = true;
