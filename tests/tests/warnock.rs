@@ -494,8 +494,8 @@ fn bad_input_gives_typed_errors_or_documented_results() {
             Err(e) => panic!("unexpected {e:?}"),
         }
     }
-    // More triangles than 16-bit indices address.
-    let lots = vec![dot; 65537];
+    // More triangles than the candidate lists address.
+    let lots = vec![dot; softedge::hsr::MAX_TRIANGLES + 1];
     assert!(matches!(
         one_band(4, 1, 0, &lots, &mut []).0,
         Err(HsrError::Capacity { .. })
@@ -576,7 +576,10 @@ fn lit_torus_storage_and_work() {
     let (full, stats) = warnock_frame(240, 240, 16, 0, &tris);
     let took = start.elapsed();
     let (one_row, _) = warnock_frame(240, 240, 1, 0, &tris);
-    assert!(one_row.raw == full.raw, "1-row bands differ from 16-row bands");
+    assert!(
+        one_row.raw == full.raw,
+        "1-row bands differ from 16-row bands"
+    );
     println!(
         "torus: {nt} triangles, {} front-facing drawn; 16-row bands: {} windows, {} filled, {} by area, \
          {} sampled; scratch peak {} u16 ({} bytes; scratch_len {} = {} bytes); host time {:?}",

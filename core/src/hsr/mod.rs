@@ -80,7 +80,9 @@ mod zbuffer;
 
 pub use depth_plane::{DepthPlane, DEPTH_FRAC};
 pub use section::Section;
-pub use warnock::{draw_warnock, scratch_len, WarnockStats, LEVELS, MAX_PARTIAL, ROOT_LOG2_SUB};
+pub use warnock::{
+    draw_warnock, scratch_len, WarnockStats, LEVELS, MAX_PARTIAL, MAX_TRIANGLES, ROOT_LOG2_SUB,
+};
 pub use zbuffer::DepthBuffer;
 pub(crate) use zbuffer::FULL;
 

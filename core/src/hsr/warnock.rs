@@ -108,6 +108,13 @@ pub const LEVELS: usize = ROOT_LOG2_SUB as usize + 1;
 /// Most triangles that may show partly in one resolved window.
 pub const MAX_PARTIAL: usize = 4;
 
+/// Most triangles one call takes: a candidate is a 15-bit index, the top
+/// bit of its `u16` flags "surrounds the window".
+pub const MAX_TRIANGLES: usize = 1 << 15;
+
+/// The flag of a candidate that surrounds its window.
+const SURROUNDS: u16 = 1 << 15;
+
 /// Scratch `u16`s that always suffice for `triangles` triangles: one index
 /// per triangle per level of the window tree.
 pub const fn scratch_len(triangles: usize) -> usize {
@@ -154,7 +161,7 @@ pub struct WarnockStats {
 ///   bytes per triangle); the walk's stack is a fixed array of 13 windows.
 ///
 /// Errors: a vertex outside the coordinate range, [`HsrError::Draw`],
-/// nothing drawn; more than 65 536 triangles, or a scene needing more
+/// nothing drawn; more than [`MAX_TRIANGLES`], or a scene needing more
 /// `scratch` than given ([`scratch_len`] always suffices),
 /// [`HsrError::Capacity`] with the length needed at least (the band may
 /// then be partly drawn).
@@ -186,7 +193,7 @@ pub fn draw_warnock<const C: usize>(
             v.check().map_err(DrawError::from)?;
         }
     }
-    if tris.len() > usize::from(u16::MAX) + 1 {
+    if tris.len() > MAX_TRIANGLES {
         return Err(HsrError::Capacity { needed: tris.len() });
     }
     let info = band.band();
@@ -265,17 +272,21 @@ enum Relation {
     Surrounds,
 }
 
-/// Setup of one triangle for the exact tests (computed where needed: a few
-/// products, no division).
+/// The outline of one triangle for the exact window tests (computed where
+/// needed: a few products, no division).
 #[derive(Debug, Clone, Copy)]
-struct Geo {
+struct Outline {
     /// Vertices, sub-pixels.
     v: [(i64, i64); 3],
     /// Edge functions `a x + b y + c`, positive inside: `[a, b, c]`.
     edges: [[i64; 3]; 3],
     /// Bounding box `(x_min, y_min, x_max, y_max)`.
     bbox: (i64, i64, i64, i64),
-    /// Depth numerator `N = nx x + ny y + n0`; `z = N / den`.
+}
+
+/// The exact depth plane of one triangle: `z = (nx x + ny y + n0) / den`.
+#[derive(Debug, Clone, Copy)]
+struct DepthFn {
     nx: i64,
     ny: i64,
     n0: i64,
@@ -283,16 +294,52 @@ struct Geo {
     den: i64,
 }
 
-impl Geo {
-    /// `None` for a triangle of zero area. Vertices in range
-    /// (`|x|, |y| <= 2^15`): `|den| <= 2^34`, `|nx|, |ny| <= 2^34`,
+/// Twice the signed area of a triangle (sub-pixels²): `|d| <= 2^33` for
+/// vertices in range (`|x|, |y| <= 2^15`).
+fn doubled_area(v: &[(i64, i64); 3]) -> i64 {
+    (v[1].0 - v[0].0) * (v[2].1 - v[0].1) - (v[2].0 - v[0].0) * (v[1].1 - v[0].1)
+}
+
+impl DepthFn {
+    /// `None` for a triangle of zero area. `|nx|, |ny| <= 2^34`,
     /// `|n0| < 2^51`, all in `i64`.
     fn new<const C: usize>(t: &DepthTriangle<C>) -> Option<Self> {
         let v = t.vertices.map(|p| (i64::from(p.x), i64::from(p.y)));
+        let d = doubled_area(&v);
+        if d == 0 {
+            return None;
+        }
+        let s = d.signum();
         let (x0, y0) = v[0];
         let (ex1, ey1) = (v[1].0 - x0, v[1].1 - y0);
         let (ex2, ey2) = (v[2].0 - x0, v[2].1 - y0);
-        let d = ex1 * ey2 - ex2 * ey1;
+        let z = t.depth.map(i64::from);
+        let (dz1, dz2) = (z[1] - z[0], z[2] - z[0]);
+        // N = z0 d + dz1 ((p - v0) x e2) + dz2 (e1 x (p - v0)).
+        let nx = dz1 * ey2 - dz2 * ey1;
+        let ny = dz2 * ex1 - dz1 * ex2;
+        let n0 = z[0] * d - nx * x0 - ny * y0;
+        Some(Self {
+            nx: s * nx,
+            ny: s * ny,
+            n0: s * n0,
+            den: s * d,
+        })
+    }
+
+    /// `2 N` at `(x + 1/2, y + 1/2)`.
+    fn depth2_centre(&self, x: i64, y: i64) -> i128 {
+        i128::from(self.nx) * i128::from(2 * x + 1)
+            + i128::from(self.ny) * i128::from(2 * y + 1)
+            + 2 * i128::from(self.n0)
+    }
+}
+
+impl Outline {
+    /// `None` for a triangle of zero area.
+    fn new<const C: usize>(t: &DepthTriangle<C>) -> Option<Self> {
+        let v = t.vertices.map(|p| (i64::from(p.x), i64::from(p.y)));
+        let d = doubled_area(&v);
         if d == 0 {
             return None;
         }
@@ -306,12 +353,6 @@ impl Geo {
             let b = s * (bx - ax);
             edges[k] = [a, b, -(a * ax + b * ay)];
         }
-        let z = t.depth.map(i64::from);
-        let (dz1, dz2) = (z[1] - z[0], z[2] - z[0]);
-        // N = z0 d + dz1 ((p - v0) x e2) + dz2 (e1 x (p - v0)).
-        let nx = dz1 * ey2 - dz2 * ey1;
-        let ny = dz2 * ex1 - dz1 * ex2;
-        let n0 = z[0] * d - nx * x0 - ny * y0;
         let xs = v.map(|p| p.0);
         let ys = v.map(|p| p.1);
         Some(Self {
@@ -323,10 +364,6 @@ impl Geo {
                 xs[0].max(xs[1]).max(xs[2]),
                 ys[0].max(ys[1]).max(ys[2]),
             ),
-            nx: s * nx,
-            ny: s * ny,
-            n0: s * n0,
-            den: s * d,
         })
     }
 
@@ -365,13 +402,6 @@ impl Geo {
         })
     }
 
-    /// `2 N` at `(x + 1/2, y + 1/2)`.
-    fn depth2_centre(&self, x: i64, y: i64) -> i128 {
-        i128::from(self.nx) * i128::from(2 * x + 1)
-            + i128::from(self.ny) * i128::from(2 * y + 1)
-            + 2 * i128::from(self.n0)
-    }
-
     /// Are the two triangles' interiors disjoint? (A line along an edge of
     /// one of them has the other wholly on its outer side.)
     fn separated(&self, other: &Self) -> bool {
@@ -387,7 +417,7 @@ impl Geo {
 /// Is `s` (index `is`) nearer than `t` (index `it`) everywhere in `w`?
 /// Ties go to the smaller index. `N_s D_t - N_t D_s` is affine: its
 /// smallest value over the window is at a corner; products below `2^87`.
-fn nearer_in(s: &Geo, is: usize, t: &Geo, it: usize, w: &Window) -> bool {
+fn nearer_in(s: &DepthFn, is: usize, t: &DepthFn, it: usize, w: &Window) -> bool {
     let (ds, dt) = (i128::from(s.den), i128::from(t.den));
     let cx = i128::from(s.nx) * dt - i128::from(t.nx) * ds;
     let cy = i128::from(s.ny) * dt - i128::from(t.ny) * ds;
@@ -402,7 +432,7 @@ fn nearer_in(s: &Geo, is: usize, t: &Geo, it: usize, w: &Window) -> bool {
 
 /// Is `s` nearer than `t` at the centre of the 1-sub-pixel window at
 /// `(x, y)`? (Ties to the smaller index.)
-fn nearer_at_centre(s: &Geo, is: usize, t: &Geo, it: usize, x: i64, y: i64) -> bool {
+fn nearer_at_centre(s: &DepthFn, is: usize, t: &DepthFn, it: usize, x: i64, y: i64) -> bool {
     let a = s.depth2_centre(x, y) * i128::from(t.den);
     let b = t.depth2_centre(x, y) * i128::from(s.den);
     a > b || (a == b && is < it)
@@ -494,14 +524,18 @@ enum Outcome {
 }
 
 impl<const C: usize> Walk<'_, '_, '_, '_, C> {
-    fn geo(&self, idx: u16) -> Option<Geo> {
-        Geo::new(self.tris.get(usize::from(idx))?)
+    fn outline(&self, idx: u16) -> Option<Outline> {
+        Outline::new(self.tris.get(usize::from(idx & !SURROUNDS))?)
     }
 
-    fn put(&mut self, at: usize, idx: u16) -> Result<(), HsrError> {
+    fn depth(&self, idx: u16) -> Option<DepthFn> {
+        DepthFn::new(self.tris.get(usize::from(idx & !SURROUNDS))?)
+    }
+
+    fn put(&mut self, at: usize, entry: u16) -> Result<(), HsrError> {
         match self.scratch.get_mut(at) {
             Some(s) => {
-                *s = idx;
+                *s = entry;
                 self.stats.peak_scratch = self.stats.peak_scratch.max(at + 1);
                 Ok(())
             }
@@ -509,12 +543,22 @@ impl<const C: usize> Walk<'_, '_, '_, '_, C> {
         }
     }
 
+    /// The list entry of a triangle towards window `w`: its index, flagged
+    /// when it surrounds the window; `None` when it misses it.
+    fn entry(&self, idx: u16, w: &Window) -> Option<u16> {
+        match self.outline(idx)?.relation(w) {
+            Relation::Outside => None,
+            Relation::Partial => Some(idx),
+            Relation::Surrounds => Some(idx | SURROUNDS),
+        }
+    }
+
     /// Walks the window tree under one root window.
     fn root(&mut self, w: Window) -> Result<(), HsrError> {
         let mut len = 0;
-        for (k, t) in self.tris.iter().enumerate() {
-            if Geo::new(t).is_some_and(|g| g.relation(&w) != Relation::Outside) {
-                self.put(len, k as u16)?;
+        for k in 0..self.tris.len() {
+            if let Some(e) = self.entry(k as u16, &w) {
+                self.put(len, e)?;
                 len += 1;
             }
         }
@@ -538,18 +582,21 @@ impl<const C: usize> Walk<'_, '_, '_, '_, C> {
             if !cw.meets(&self.area) {
                 continue;
             }
-            // The quarter's candidates, after its parent's.
+            // The quarter's candidates, after its parent's. What surrounds
+            // the parent surrounds the quarter.
             let start = f.start + f.len;
             let mut len = 0;
             for k in f.start..f.start + f.len {
-                let Some(&idx) = self.scratch.get(k) else {
+                let Some(&e) = self.scratch.get(k) else {
                     break;
                 };
-                if self
-                    .geo(idx)
-                    .is_some_and(|g| g.relation(&cw) != Relation::Outside)
-                {
-                    self.put(start + len, idx)?;
+                let child = if e & SURROUNDS != 0 {
+                    Some(e)
+                } else {
+                    self.entry(e, &cw)
+                };
+                if let Some(e) = child {
+                    self.put(start + len, e)?;
                     len += 1;
                 }
             }
@@ -582,23 +629,24 @@ impl<const C: usize> Walk<'_, '_, '_, '_, C> {
         let (wx, wy) = (i64::from(w.x), i64::from(w.y));
         // S: the surrounding triangle nearest at the window's centre (the
         // centre of its top-left sub-pixel: any interior point would do).
-        let mut s: Option<(u16, Geo)> = None;
+        let mut s: Option<(u16, DepthFn)> = None;
         for k in start..end {
-            let Some(&idx) = self.scratch.get(k) else {
+            let Some(&e) = self.scratch.get(k) else {
                 break;
             };
-            let Some(g) = self.geo(idx) else { continue };
-            if g.relation(w) != Relation::Surrounds {
+            if e & SURROUNDS == 0 {
                 continue;
             }
+            let idx = e & !SURROUNDS;
+            let Some(d) = self.depth(idx) else { continue };
             let better = match &s {
                 None => true,
-                Some((si, sg)) => {
-                    nearer_at_centre(&g, usize::from(idx), sg, usize::from(*si), wx, wy)
+                Some((si, sd)) => {
+                    nearer_at_centre(&d, usize::from(idx), sd, usize::from(*si), wx, wy)
                 }
             };
             if better {
-                s = Some((idx, g));
+                s = Some((idx, d));
             }
         }
         // Without a surrounding triangle nothing can be dropped: more
@@ -613,64 +661,63 @@ impl<const C: usize> Walk<'_, '_, '_, '_, C> {
             };
         }
         // Drop what S hides; collect P, the rest.
-        let mut p: heapless::Vec<(u16, Geo), MAX_PARTIAL> = heapless::Vec::new();
+        let mut p: heapless::Vec<u16, MAX_PARTIAL> = heapless::Vec::new();
         let mut simple = true;
         let mut kept = start;
         for k in start..end {
-            let Some(&idx) = self.scratch.get(k) else {
+            let Some(&e) = self.scratch.get(k) else {
                 break;
             };
-            let Some(g) = self.geo(idx) else { continue };
-            let keep = match &s {
-                Some((si, _)) if *si == idx => true,
-                Some((si, sg)) => {
-                    let (i, si) = (usize::from(idx), usize::from(*si));
-                    if nearer_in(sg, si, &g, i, w) {
-                        false
-                    } else {
-                        // Visible somewhere: it must be a partial one in
-                        // front of S everywhere.
-                        if g.relation(w) == Relation::Surrounds || !nearer_in(&g, i, sg, si, w) {
-                            simple = false;
-                        }
-                        true
-                    }
+            let idx = e & !SURROUNDS;
+            let is_s = s.as_ref().is_some_and(|(si, _)| *si == idx);
+            if let (false, Some((si, sd))) = (is_s, &s) {
+                let Some(d) = self.depth(idx) else { continue };
+                let (i, si) = (usize::from(idx), usize::from(*si));
+                if nearer_in(sd, si, &d, i, w) {
+                    continue;
                 }
-                None => true,
-            };
-            if !keep {
-                continue;
+                // Visible somewhere: it must be a partial one in front of
+                // S everywhere.
+                if e & SURROUNDS != 0 || !nearer_in(&d, i, sd, si, w) {
+                    simple = false;
+                }
             }
-            if s.as_ref().is_none_or(|(si, _)| *si != idx) && simple && p.push((idx, g)).is_err() {
+            if !is_s && simple && p.push(idx).is_err() {
                 simple = false;
             }
             if let Some(slot) = self.scratch.get_mut(kept) {
-                *slot = idx;
+                *slot = e;
             }
             kept += 1;
         }
-        if simple {
-            for (a, (_, ga)) in p.iter().enumerate() {
-                for (_, gb) in p.iter().skip(a + 1) {
-                    if !ga.separated(gb) {
+        let pixel = w.log <= SUB_BITS;
+        if simple && (p.is_empty() || pixel) {
+            let mut outlines: heapless::Vec<(u16, Outline), MAX_PARTIAL> = heapless::Vec::new();
+            for &idx in &p {
+                if let Some(o) = self.outline(idx) {
+                    let _ = outlines.push((idx, o));
+                }
+            }
+            for (a, (_, oa)) in outlines.iter().enumerate() {
+                for (_, ob) in outlines.iter().skip(a + 1) {
+                    if !oa.separated(ob) {
                         simple = false;
                     }
                 }
             }
-        }
-        let pixel = w.log <= SUB_BITS;
-        if simple && (p.is_empty() || pixel) {
-            let surface = s.map(|(idx, _)| idx);
-            if pixel {
-                self.stats.by_area = self.stats.by_area.saturating_add(1);
-                self.draw_small(w, surface, &p);
-            } else {
-                self.stats.filled = self.stats.filled.saturating_add(1);
-                if let Some(idx) = surface {
-                    self.fill(w, idx);
+            if simple {
+                let surface = s.map(|(idx, _)| idx);
+                if pixel {
+                    self.stats.by_area = self.stats.by_area.saturating_add(1);
+                    self.draw_small(w, surface, &outlines);
+                } else {
+                    self.stats.filled = self.stats.filled.saturating_add(1);
+                    if let Some(idx) = surface {
+                        self.fill(w, idx);
+                    }
                 }
+                return Outcome::Done;
             }
-            return Outcome::Done;
         }
         if w.log == 0 {
             self.stats.sampled = self.stats.sampled.saturating_add(1);
@@ -682,7 +729,7 @@ impl<const C: usize> Walk<'_, '_, '_, '_, C> {
 
     /// The Gouraud plane of triangle `idx`, relative to the background.
     fn plane(&self, idx: u16) -> Option<Plane<C>> {
-        let t = self.tris.get(usize::from(idx))?;
+        let t = self.tris.get(usize::from(idx & !SURROUNDS))?;
         Plane::triangle(t.vertices, t.colors, self.band.background())
     }
 
@@ -718,7 +765,7 @@ impl<const C: usize> Walk<'_, '_, '_, '_, C> {
 
     /// Draws a window of one pixel or less: each of `p` with its exact area
     /// in the window, `s` (or the background) on the rest.
-    fn draw_small(&mut self, w: &Window, s: Option<u16>, p: &[(u16, Geo)]) {
+    fn draw_small(&mut self, w: &Window, s: Option<u16>, p: &[(u16, Outline)]) {
         let (i, j) = (w.x >> SUB_BITS, w.y >> SUB_BITS);
         let (x0, y0) = (i64::from(w.x), i64::from(w.y));
         let size = i64::from(w.size());
@@ -727,8 +774,8 @@ impl<const C: usize> Walk<'_, '_, '_, '_, C> {
         let mut rest = (size * size) << (AREA_FRAC - 8);
         let shift = PLANE_FRAC + AREA_FRAC - COVER_BITS;
         let mut cell = [0i64; C];
-        for (idx, g) in p {
-            let a = area_in(&g.v, x0, y0, x0 + size, y0 + size).min(rest);
+        for (idx, o) in p {
+            let a = area_in(&o.v, x0, y0, x0 + size, y0 + size).min(rest);
             rest -= a;
             if let Some(plane) = self.plane(*idx) {
                 let at = plane.at(i, j);
@@ -750,23 +797,24 @@ impl<const C: usize> Walk<'_, '_, '_, '_, C> {
     /// nearest at its centre (if any holds the centre).
     fn sample(&mut self, w: &Window, start: usize, end: usize) {
         let (x, y) = (i64::from(w.x), i64::from(w.y));
-        let mut best: Option<(u16, Geo)> = None;
+        let mut best: Option<(u16, DepthFn)> = None;
         for k in start..end {
-            let Some(&idx) = self.scratch.get(k) else {
+            let Some(&e) = self.scratch.get(k) else {
                 break;
             };
-            let Some(g) = self.geo(idx) else { continue };
-            if !g.holds_centre(x, y) {
+            let idx = e & !SURROUNDS;
+            if e & SURROUNDS == 0 && !self.outline(idx).is_some_and(|o| o.holds_centre(x, y)) {
                 continue;
             }
+            let Some(d) = self.depth(idx) else { continue };
             let better = match &best {
                 None => true,
-                Some((bi, bg)) => {
-                    nearer_at_centre(&g, usize::from(idx), bg, usize::from(*bi), x, y)
+                Some((bi, bd)) => {
+                    nearer_at_centre(&d, usize::from(idx), bd, usize::from(*bi), x, y)
                 }
             };
             if better {
-                best = Some((idx, g));
+                best = Some((idx, d));
             }
         }
         let Some(plane) = best.and_then(|(idx, _)| self.plane(idx)) else {
@@ -810,7 +858,7 @@ mod tests {
     #[test]
     fn relations_are_exact() {
         let t = DepthTriangle::<1>::new(pts([(0, 0), (64, 0), (0, 64)]), [[0]; 3], [0; 3]);
-        let g = Geo::new(&t).unwrap();
+        let g = Outline::new(&t).unwrap();
         let w = |x, y, log| Window { x, y, log };
         assert_eq!(g.relation(&w(0, 0, 4)), Relation::Surrounds);
         // The window's corner (32, 32) lies on the hypotenuse: still inside.
@@ -825,7 +873,7 @@ mod tests {
         // Two planes crossing along x = 32.
         let a = DepthTriangle::<1>::new(pts([(0, 0), (64, 0), (0, 64)]), [[0]; 3], [0, 64, 0]);
         let b = DepthTriangle::<1>::new(pts([(0, 0), (64, 0), (0, 64)]), [[0]; 3], [32; 3]);
-        let (ga, gb) = (Geo::new(&a).unwrap(), Geo::new(&b).unwrap());
+        let (ga, gb) = (DepthFn::new(&a).unwrap(), DepthFn::new(&b).unwrap());
         let w = |x| Window { x, y: 0, log: 4 };
         assert!(nearer_in(&gb, 1, &ga, 0, &w(0)));
         assert!(nearer_in(&ga, 0, &gb, 1, &w(32)));
