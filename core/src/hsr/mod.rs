@@ -67,9 +67,10 @@
 //! surrounds it and the visible rest are triangles in front of it that do
 //! not overlap one another; each then shows its exact area. Windows larger
 //! than a pixel are drawn only when filled by one surface; edges are
-//! resolved by area in pixel windows, or below them down to 1/16 px (the
-//! vertex grid), where a window still not simple goes to the surface
-//! nearest at its centre (1/256 px each). Depth comparisons are exact, the
+//! resolved by area in pixel windows (two surfaces passing through each
+//! other there are split by their intersection line), or below them down
+//! to 1/16 px (the vertex grid), where a window still not simple is point
+//! sampled 4 x 4 (at most 1/256 px off). Depth comparisons are exact, the
 //! candidate lists live in caller scratch, and the frame does not depend on
 //! the band height. Accuracy, storage and cost: [`draw_warnock`].
 

@@ -31,24 +31,32 @@
 //!
 //! Windows larger than a pixel are drawn only when `P` is empty (a filled
 //! window: one addition per pixel); windows with visible edges go down to
-//! one pixel, where the areas are computed. A pixel that is still not
-//! simple enough (two visible edges overlapping in it, or two surfaces
-//! passing through each other) is split further, down to windows of 1/16
-//! px: the vertex grid, the finest grid the geometry has. A 1/16-px window
-//! that is still not simple is given whole to the surface nearest at its
-//! centre (a point sample with exact depth, under the top-left rule).
+//! one pixel, where the areas are computed. At one pixel or less one more
+//! exact rule: when exactly two triangles are left, both surrounding the
+//! window and passing through each other in it, each shows where its plane
+//! is nearer, split by their intersection line (the area of a half-plane in
+//! a square). A pixel that is still not simple enough (two visible edges
+//! overlapping in it, a visible edge meeting an intersection line) is split
+//! further, down to windows of 1/16 px: the vertex grid, the finest grid
+//! the geometry has. A 1/16-px window that is still not simple is point
+//! sampled: each of its 4 x 4 points (1/4096 px each) goes to the surface
+//! nearest there, with exact depths, under the top-left rule.
 //!
 //! ## Accuracy
 //!
 //! - Coverage is exact but for rounding wherever a window is resolved by
-//!   the rule: each triangle's area in a pixel or sub-pixel window is a sum
-//!   of three per-edge terms, each rounded to 1/2^20 px; summed over all
-//!   the windows of a pixel this stays below 1/4096 px.
+//!   the rules: each triangle's area in a pixel or sub-pixel window is a
+//!   sum of three per-edge terms, each rounded to 1/2^20 px, and a split by
+//!   an intersection line is rounded to 2^-17 of its window; summed over
+//!   all the windows of a pixel this stays below 1/4096 px.
 //! - A 1/16-px window that had to be sampled is off by at most its own area,
-//!   1/256 px. Such windows lie only where two visible edges or an
-//!   intersection line pass within 1/16 px of each other (crossings of
-//!   silhouettes, interpenetrating surfaces), never along a silhouette over
-//!   a farther surface or a mesh's shared edges.
+//!   1/256 px (by at most 7/16 of it for one straight boundary through it:
+//!   a line crosses at most 7 of the 4 x 4 sample squares). Such windows
+//!   lie only where two visible edges, or an edge and an intersection line,
+//!   pass within 1/16 px of each other (crossings of silhouettes, where a
+//!   triangle's edge pierces another surface), never along a silhouette
+//!   over a farther surface, a mesh's shared edges or an intersection line
+//!   alone.
 //! - Intensity: each surface's Gouraud plane at the pixel centre
 //!   ([`Plane::at`]), the same value the other methods use, times its
 //!   visible area; the background shows through the uncovered rest.
@@ -88,8 +96,9 @@
 //! Multiplies happen in window setup: the classification of each candidate
 //! (edge functions at corners, a few `i64` products per candidate per
 //! window), depth comparisons (`i128` products), the area of a triangle in
-//! a pixel or sub-pixel window (per edge: a few products and one division)
-//! and the Gouraud plane of each surface drawn in a resolved window (the
+//! a pixel or sub-pixel window (per edge: a few products and one division),
+//! the split by an intersection line (`i128` products, one division), the
+//! 16 point tests of a sampled window, and the Gouraud plane of each surface drawn in a resolved window (the
 //! divisions of [`Plane::triangle`]). Filling a window of whole pixels is
 //! one addition and one shift per pixel and channel.
 
@@ -111,6 +120,10 @@ pub const MAX_PARTIAL: usize = 4;
 /// Most triangles one call takes: a candidate is a 15-bit index, the top
 /// bit of its `u16` flags "surrounds the window".
 pub const MAX_TRIANGLES: usize = 1 << 15;
+
+/// Sample points per axis in a 1/16-px window that the rule cannot
+/// resolve: 4 x 4 points, each standing for 1/4096 px.
+const SAMPLES: i64 = 4;
 
 /// The flag of a candidate that surrounds its window.
 const SURROUNDS: u16 = 1 << 15;
@@ -149,12 +162,13 @@ pub struct WarnockStats {
 /// fills them (one addition per pixel).
 ///
 /// - Accuracy: coverage exact within 1/4096 px per pixel wherever a window
-///   is resolved by that rule, which includes every silhouette over a
-///   farther surface and every shared edge of a mesh; a 1/16-px window
-///   that is still not simple (visible edges crossing, surfaces passing
-///   through each other) goes whole to the surface nearest at its centre:
-///   at most 1/256 px off. Intensity: each surface's Gouraud plane at the
-///   pixel centre times its area; the background on the rest.
+///   is resolved by the rules, which includes every silhouette over a
+///   farther surface, every shared edge of a mesh and every intersection
+///   line of two surfaces; a 1/16-px window that is still not simple
+///   (visible edges crossing, an edge piercing another surface) is point
+///   sampled 4 x 4: at most 1/256 px off. Intensity: each surface's
+///   Gouraud plane at the pixel centre times its area; the background on
+///   the rest.
 /// - The pixels do not depend on the band height (bit for bit).
 /// - Storage: `scratch` holds the candidate lists of the windows on the
 ///   current path, [`scratch_len`]`(n) = 13 n` `u16`s always suffice (26
@@ -327,11 +341,11 @@ impl DepthFn {
         })
     }
 
-    /// `2 N` at `(x + 1/2, y + 1/2)`.
-    fn depth2_centre(&self, x: i64, y: i64) -> i128 {
-        i128::from(self.nx) * i128::from(2 * x + 1)
-            + i128::from(self.ny) * i128::from(2 * y + 1)
-            + 2 * i128::from(self.n0)
+    /// `m N` at the point `(px / m, py / m)` (sub-pixels).
+    fn numerator_at(&self, px: i64, py: i64, m: i64) -> i128 {
+        i128::from(self.nx) * i128::from(px)
+            + i128::from(self.ny) * i128::from(py)
+            + i128::from(m) * i128::from(self.n0)
     }
 }
 
@@ -393,11 +407,12 @@ impl Outline {
         }
     }
 
-    /// Is the point `(x + 1/2, y + 1/2)` inside, under the top-left rule
-    /// (nudged by `(ε, ε²)`, as the tests' reference)?
-    fn holds_centre(&self, x: i64, y: i64) -> bool {
+    /// Is the point `(px / m, py / m)` (sub-pixels) inside, under the
+    /// top-left rule (nudged by `(ε, ε²)`, as the tests' reference)?
+    /// `m <= 8`: products below `2^38`.
+    fn holds(&self, px: i64, py: i64, m: i64) -> bool {
         self.edges.iter().all(|&[a, b, c]| {
-            let e = a * (2 * x + 1) + b * (2 * y + 1) + 2 * c;
+            let e = a * px + b * py + m * c;
             e > 0 || (e == 0 && (a > 0 || (a == 0 && b > 0)))
         })
     }
@@ -433,8 +448,8 @@ fn nearer_in(s: &DepthFn, is: usize, t: &DepthFn, it: usize, w: &Window) -> bool
 /// Is `s` nearer than `t` at the centre of the 1-sub-pixel window at
 /// `(x, y)`? (Ties to the smaller index.)
 fn nearer_at_centre(s: &DepthFn, is: usize, t: &DepthFn, it: usize, x: i64, y: i64) -> bool {
-    let a = s.depth2_centre(x, y) * i128::from(t.den);
-    let b = t.depth2_centre(x, y) * i128::from(s.den);
+    let a = s.numerator_at(2 * x + 1, 2 * y + 1, 2) * i128::from(t.den);
+    let b = t.numerator_at(2 * x + 1, 2 * y + 1, 2) * i128::from(s.den);
     a > b || (a == b && is < it)
 }
 
@@ -493,6 +508,65 @@ fn area_in(v: &[(i64, i64); 3], x0: i64, y0: i64, x1: i64, y1: i64) -> i64 {
         total += sign * div_round(r << (AREA_FRAC - 9), dy * k);
     }
     total.abs()
+}
+
+/// The share of a window where `f(u, v) = cx u + cy v + d0 >= 0`, for
+/// `u, v` in `[0, 1]`, in `1/2^AREA_FRAC` of the window: where the nearer
+/// of two planes crossing in the window is the one `f` favours.
+///
+/// Exact but for one normalisation: when the line crosses the window the
+/// coefficients are shifted right until the larger slope is below `2^20`,
+/// which moves the line by less than `2^-18` of the window (the share by
+/// less than `2^-17`). Then, with `cy > 0` and `cx >= 0` (mirroring `u`,
+/// `v` or swapping them does not change the share), the part below the
+/// line is `∫ clamp(g(u), 0, 1) du` for `g = -(d0 + cx u) / cy`, the same
+/// trapezoid-or-triangle integral as [`right_of`]; every product stays
+/// below `2^61`.
+fn half_plane_share(cx: i128, cy: i128, d0: i128) -> i64 {
+    let one = 1i64 << AREA_FRAC;
+    let corners = [d0, d0 + cx, d0 + cy, d0 + cx + cy];
+    if corners.iter().all(|&f| f >= 0) {
+        return one;
+    }
+    if corners.iter().all(|&f| f <= 0) {
+        return 0;
+    }
+    // The line crosses the window: |d0| <= |cx| + |cy|.
+    let m = cx.unsigned_abs().max(cy.unsigned_abs());
+    let k = (128 - m.leading_zeros()).saturating_sub(20);
+    let narrow = |v: i128| (v >> k) as i64;
+    let (mut cx, mut cy, mut d0) = (narrow(cx), narrow(cy), narrow(d0));
+    if cy.abs() < cx.abs() {
+        core::mem::swap(&mut cx, &mut cy);
+    }
+    if cy < 0 {
+        // v -> 1 - v.
+        d0 += cy;
+        cy = -cy;
+    }
+    if cx < 0 {
+        // u -> 1 - u.
+        d0 += cx;
+        cx = -cx;
+    }
+    if cy == 0 {
+        return if d0 >= 0 { one } else { 0 };
+    }
+    let kk = cx.max(1);
+    // 2 kk times the integral of max(G(u) - h, 0), G(u) = -d0 - cx u
+    // (decreasing), over [0, 1].
+    let part = |h: i64| {
+        let (a, b) = (-d0 - h, -d0 - cx - h);
+        if b >= 0 {
+            (a + b) * kk
+        } else if a <= 0 {
+            0
+        } else {
+            a * a
+        }
+    };
+    let below = div_round((part(0) - part(cy)) << (AREA_FRAC - 1), kk * cy);
+    (one - below).clamp(0, one)
 }
 
 /// One window of the depth-first walk: its candidates are
@@ -719,6 +793,18 @@ impl<const C: usize> Walk<'_, '_, '_, '_, C> {
                 return Outcome::Done;
             }
         }
+        if pixel && kept - start == 2 {
+            // Two surfaces that both cover the window and pass through
+            // each other: split exactly by their intersection line.
+            let pair = (self.scratch.get(start), self.scratch.get(start + 1));
+            if let (Some(&a), Some(&b)) = pair {
+                if a & b & SURROUNDS != 0 {
+                    self.stats.by_area = self.stats.by_area.saturating_add(1);
+                    self.draw_crossing(w, a & !SURROUNDS, b & !SURROUNDS);
+                    return Outcome::Done;
+                }
+            }
+        }
         if w.log == 0 {
             self.stats.sampled = self.stats.sampled.saturating_add(1);
             self.sample(w, start, kept);
@@ -793,37 +879,101 @@ impl<const C: usize> Walk<'_, '_, '_, '_, C> {
         self.band.add_cell(i, j, &cell.map(saturate));
     }
 
-    /// A 1/16-px window not simple enough: it goes whole to the candidate
-    /// nearest at its centre (if any holds the centre).
+    /// Draws a window of one pixel or less covered by two triangles `a`
+    /// and `b` whose planes cross in it: each where it is nearer.
+    fn draw_crossing(&mut self, w: &Window, a: u16, b: u16) {
+        let (Some(da), Some(db)) = (self.depth(a), self.depth(b)) else {
+            return;
+        };
+        // f = N_a D_b - N_b D_a (> 0 where a is nearer), over the window
+        // as the unit square: products below 2^88.
+        let (ta, tb) = (i128::from(da.den), i128::from(db.den));
+        let size = i128::from(w.size());
+        let cx = i128::from(da.nx) * tb - i128::from(db.nx) * ta;
+        let cy = i128::from(da.ny) * tb - i128::from(db.ny) * ta;
+        let d0 = cx * i128::from(w.x) + cy * i128::from(w.y) + i128::from(da.n0) * tb
+            - i128::from(db.n0) * ta;
+        let share = half_plane_share(cx * size, cy * size, d0);
+        let (i, j) = (w.x >> SUB_BITS, w.y >> SUB_BITS);
+        let whole = i64::from(w.size() * w.size()) << (AREA_FRAC - 8);
+        let area_a = (share * whole) >> AREA_FRAC;
+        let shift = PLANE_FRAC + AREA_FRAC - COVER_BITS;
+        let mut cell = [0i64; C];
+        for (idx, area) in [(a, area_a), (b, whole - area_a)] {
+            if let Some(plane) = self.plane(idx) {
+                let at = plane.at(i, j);
+                for ch in 0..C {
+                    cell[ch] += (at[ch] * area) >> shift;
+                }
+            }
+        }
+        self.band.add_cell(i, j, &cell.map(saturate));
+    }
+
+    /// A 1/16-px window not simple enough: each of its 4 x 4 sample
+    /// points (1/4096 px each) goes to the candidate nearest there, under
+    /// the top-left rule with exact depths.
     fn sample(&mut self, w: &Window, start: usize, end: usize) {
+        const N: usize = (SAMPLES * SAMPLES) as usize;
         let (x, y) = (i64::from(w.x), i64::from(w.y));
-        let mut best: Option<(u16, DepthFn)> = None;
+        let point = |n: usize| {
+            let (s, t) = ((n as i64) % SAMPLES, (n as i64) / SAMPLES);
+            (2 * SAMPLES * x + 2 * s + 1, 2 * SAMPLES * y + 2 * t + 1)
+        };
+        // Per point: the nearest candidate holding it, with its depth
+        // numerator there and its denominator.
+        let mut best: [Option<(u16, i128, i64)>; N] = [None; N];
         for k in start..end {
             let Some(&e) = self.scratch.get(k) else {
                 break;
             };
             let idx = e & !SURROUNDS;
-            if e & SURROUNDS == 0 && !self.outline(idx).is_some_and(|o| o.holds_centre(x, y)) {
+            let (Some(o), Some(d)) = (self.outline(idx), self.depth(idx)) else {
                 continue;
-            }
-            let Some(d) = self.depth(idx) else { continue };
-            let better = match &best {
-                None => true,
-                Some((bi, bd)) => {
-                    nearer_at_centre(&d, usize::from(idx), bd, usize::from(*bi), x, y)
-                }
             };
-            if better {
-                best = Some((idx, d));
+            for (n, slot) in best.iter_mut().enumerate() {
+                let (px, py) = point(n);
+                if e & SURROUNDS == 0 && !o.holds(px, py, 2 * SAMPLES) {
+                    continue;
+                }
+                let z = d.numerator_at(px, py, 2 * SAMPLES);
+                let better = match slot {
+                    None => true,
+                    Some((bi, bz, bden)) => {
+                        let (a, b) = (z * i128::from(*bden), *bz * i128::from(d.den));
+                        a > b || (a == b && idx < *bi)
+                    }
+                };
+                if better {
+                    *slot = Some((idx, z, d.den));
+                }
             }
         }
-        let Some(plane) = best.and_then(|(idx, _)| self.plane(idx)) else {
-            return;
-        };
+        // Each point is 1/16 of 1/256 px: one coverage unit.
         let (i, j) = (w.x >> SUB_BITS, w.y >> SUB_BITS);
-        // One sub-pixel is 16/4096 px.
-        let cell = plane.at(i, j).map(|v| saturate((v * 16) >> PLANE_FRAC));
-        self.band.add_cell(i, j, &cell);
+        let mut cell = [0i64; C];
+        for n in 0..N {
+            let Some(Some((idx, _, _))) = best.get(n).copied() else {
+                continue;
+            };
+            if best
+                .get(..n)
+                .is_some_and(|b| b.iter().any(|p| p.is_some_and(|p| p.0 == idx)))
+            {
+                continue; // counted with its first point
+            }
+            let count = best
+                .iter()
+                .filter(|p| p.is_some_and(|p| p.0 == idx))
+                .count() as i64;
+            if let Some(plane) = self.plane(idx) {
+                let at = plane.at(i, j);
+                for ch in 0..C {
+                    cell[ch] += (at[ch] * count) >> PLANE_FRAC;
+                }
+            }
+        }
+        self.band.add_cell(i, j, &cell.map(saturate));
     }
 }
 
@@ -853,6 +1003,23 @@ mod tests {
         // A thin sliver: 1/3 of a sub-pixel row across the pixel.
         let thin = [(0, 4), (48, 4), (0, 5)];
         assert_eq!(area_in(&thin, 0, 0, 16, 16), (px / 256) * 16 * 5 / 6);
+    }
+
+    #[test]
+    fn half_plane_shares() {
+        let one = 1i64 << AREA_FRAC;
+        // u >= 1/2, u <= 1/2, v >= 1/4, the diagonal u + v >= 1.
+        assert_eq!(half_plane_share(2, 0, -1), one / 2);
+        assert_eq!(half_plane_share(-2, 0, 1), one / 2);
+        assert_eq!(half_plane_share(0, 4, -1), one * 3 / 4);
+        assert_eq!(half_plane_share(1, 1, -1), one / 2);
+        // u + v <= 1/2: a corner triangle of area 1/8; huge coefficients.
+        let big = 1i128 << 80;
+        assert_eq!(half_plane_share(-2 * big, -2 * big, big), one / 8);
+        assert_eq!(half_plane_share(3, 5, 1), one);
+        assert_eq!(half_plane_share(-3, -5, -1), 0);
+        // 2u + v >= 1: below the line v = 1 - 2u lies 1/4.
+        assert_eq!(half_plane_share(2, 1, -1), one * 3 / 4);
     }
 
     #[test]
