@@ -61,9 +61,19 @@ fn warnock_frame(
     bg: u16,
     tris: &[DepthTriangle<1>],
 ) -> (Frame<1>, WarnockStats) {
+    warnock_frame_c(w, h, rows, [bg], tris)
+}
+
+fn warnock_frame_c<const C: usize>(
+    w: u16,
+    h: u16,
+    rows: u16,
+    bg: [u16; C],
+    tris: &[DepthTriangle<C>],
+) -> (Frame<C>, WarnockStats) {
     let mut scratch = vec![0u16; scratch_len(tris.len())];
     let mut total = WarnockStats::default();
-    let f = render(w, h, rows, [bg], |buf| {
+    let f = render(w, h, rows, bg, |buf| {
         let s = draw_warnock(tris, buf, &mut scratch).expect("warnock");
         total.windows += s.windows;
         total.filled += s.filled;
@@ -430,6 +440,33 @@ fn every_band_height_gives_the_same_frame() {
         let (full, _) = warnock_frame(W, H, H, bg, &tris);
         for rows in [1, 7, 16] {
             let (f, _) = warnock_frame(W, H, rows, bg, &tris);
+            assert!(
+                f.raw == full.raw,
+                "{rows}-row bands differ from the full frame"
+            );
+        }
+    }
+}
+
+#[test]
+fn every_band_height_gives_the_same_frame_in_rgb() {
+    const W: u16 = 40;
+    const H: u16 = 33;
+    let mut rng = Rng(0x0000_0c01_0a5b);
+    for _ in 0..4 {
+        let n = rng.range(3, 16) as usize;
+        let tris: Vec<DepthTriangle<3>> = (0..n)
+            .map(|_| {
+                let (v, _, z) = random_tri(&mut rng, -100, 16 * 40 + 100);
+                let colors = [0; 3].map(|_| [0; 3].map(|_| rng.range(0, 4096) as u16));
+                let p = sub_points(&v);
+                DepthTriangle::new([p[0], p[1], p[2]], colors, z)
+            })
+            .collect();
+        let bg = [0; 3].map(|_| rng.range(0, 4096) as u16);
+        let (full, _) = warnock_frame_c(W, H, H, bg, &tris);
+        for rows in [1, 7, 16] {
+            let (f, _) = warnock_frame_c(W, H, rows, bg, &tris);
             assert!(
                 f.raw == full.raw,
                 "{rows}-row bands differ from the full frame"
