@@ -18,7 +18,8 @@
 use std::fmt;
 
 use softedge::hsr::{
-    draw_zbuffer, sort_front_to_back, DepthBuffer, DepthTriangle, HsrError, Section, VisibleSet,
+    draw_warnock, draw_zbuffer, scratch_len, sort_front_to_back, DepthBuffer, DepthTriangle,
+    HsrError, Section, VisibleSet,
 };
 use softedge::postfilter::{FilterError, FilterStats, LightnessFilter, LightnessPixel};
 use softedge::{
@@ -112,6 +113,9 @@ pub enum Hsr {
     None,
     /// The z-buffer in bands with anti-aliased edges (`softedge::hsr`).
     ZBuffer,
+    /// Warnock's subdivision down to 1/16 px, edges resolved by area
+    /// (`softedge::hsr::draw_warnock`), band by band.
+    Warnock,
     /// Weiler–Atherton: disjoint visible polygons computed once per frame
     /// (`softedge::hsr::weiler`), then accumulated exactly.
     WeilerAtherton,
@@ -269,6 +273,8 @@ enum Prepared<const C: usize> {
     Section(Vec<(Primitive<C>, usize)>),
     /// Weiler–Atherton's visible pieces of the frame's depth triangles.
     Weiler(Vec<DepthTriangle<C>>, Box<VisibleSet<WEILER_CAPACITY>>),
+    /// The frame's depth triangles for Warnock's subdivision.
+    Warnock(Vec<DepthTriangle<C>>),
 }
 
 impl<const C: usize> Prepared<C> {
@@ -297,6 +303,9 @@ impl<const C: usize> Prepared<C> {
             }
             return Ok(Self::Section(out));
         }
+        if scene.hsr == Hsr::Warnock {
+            return Ok(Self::Warnock(tris.iter().map(|(t, _)| *t).collect()));
+        }
         if scene.hsr == Hsr::WeilerAtherton {
             let tris: Vec<DepthTriangle<C>> = tris.iter().map(|(t, _)| *t).collect();
             let mut set = Box::new(VisibleSet::new());
@@ -322,6 +331,8 @@ struct BandStore<const C: usize> {
     cover: Vec<i32>,
     depth: Vec<u16>,
     covered: Vec<u16>,
+    /// Warnock's candidate lists.
+    scratch: Vec<u16>,
 }
 
 impl<const C: usize> BandStore<C> {
@@ -335,6 +346,7 @@ impl<const C: usize> BandStore<C> {
             cover: vec![0i32; BandBuffer::<C>::cover_len(width, rows)],
             depth: vec![0u16; zlen],
             covered: vec![0u16; zlen],
+            scratch: Vec::new(),
         }
     }
 
@@ -368,6 +380,13 @@ impl<const C: usize> BandStore<C> {
             }
             Prepared::Weiler(tris, set) => {
                 set.draw(tris, &mut buf, style).map_err(RenderError::Hsr)?;
+            }
+            Prepared::Warnock(tris) => {
+                // Warnock resolves edges by area itself: no pixel model.
+                if self.scratch.len() < scratch_len(tris.len()) {
+                    self.scratch.resize(scratch_len(tris.len()), 0);
+                }
+                draw_warnock(tris, &mut buf, &mut self.scratch).map_err(RenderError::Hsr)?;
             }
             Prepared::ZBuffer(tris) => {
                 let mut zbuf = DepthBuffer::new(&mut self.depth, &mut self.covered, band)

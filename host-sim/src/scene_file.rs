@@ -543,13 +543,14 @@ impl Checker<'_> {
                 "none" => Hsr::None,
                 "zbuffer" => Hsr::ZBuffer,
                 "weiler-atherton" => Hsr::WeilerAtherton,
-                other => {
-                    return self.err(
-                        m.span(),
-                        "render.hsr",
-                        format!("unknown method `{other}`; one of none, zbuffer, weiler-atherton"),
-                    )
-                }
+                "warnock" => Hsr::Warnock,
+                other => return self.err(
+                    m.span(),
+                    "render.hsr",
+                    format!(
+                        "unknown method `{other}`; one of none, zbuffer, warnock, weiler-atherton"
+                    ),
+                ),
             },
         };
         let section = match &r.section {

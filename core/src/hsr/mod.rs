@@ -102,14 +102,33 @@
 //! is exact at intersections too. Exact where the visible boundaries are
 //! the triangles' own edges; elsewhere the boundary passes through vertices
 //! rounded to 1/16 px ([`weiler`] states the bound).
+//!
+//! ## Warnock's subdivision
+//!
+//! [`draw_warnock`] splits the screen into a fixed quadtree of windows
+//! (seed 004, rules 1-6): a window is drawn when nothing overlaps it, or
+//! when, behind everything visible in it, one surface (or the background)
+//! surrounds it and the visible rest are triangles in front of it that do
+//! not overlap one another; each then shows its exact area. Windows larger
+//! than a pixel are drawn only when filled by one surface; edges are
+//! resolved by area in pixel windows (two surfaces passing through each
+//! other there are split by their intersection line), or below them down
+//! to 1/16 px (the vertex grid), where a window still not simple is point
+//! sampled 4 x 4 (at most 1/256 px off). Depth comparisons are exact, the
+//! candidate lists live in caller scratch, and the frame does not depend on
+//! the band height. Accuracy, storage and cost: [`draw_warnock`].
 
 mod depth_plane;
 mod section;
+mod warnock;
 pub mod weiler;
 mod zbuffer;
 
 pub use depth_plane::{DepthPlane, DEPTH_FRAC};
 pub use section::Section;
+pub use warnock::{
+    draw_warnock, scratch_len, WarnockStats, LEVELS, MAX_PARTIAL, MAX_TRIANGLES, ROOT_LOG2_SUB,
+};
 pub use weiler::{VisiblePiece, VisibleSet, WeilerStats, PIECE_VERTICES};
 pub use zbuffer::DepthBuffer;
 pub(crate) use zbuffer::FULL;
@@ -149,6 +168,8 @@ pub enum HsrMethod {
     None,
     /// The z-buffer in bands, with anti-aliased edges (see above).
     ZBuffer,
+    /// Warnock's subdivision, edges resolved by area ([`draw_warnock`]).
+    Warnock,
     /// Weiler–Atherton: disjoint visible pieces, accumulated exactly
     /// ([`weiler`]).
     WeilerAtherton,

@@ -191,12 +191,14 @@ const MODELS: [(&str, softedge::PixelModel); 9] = [
 /// projected once per frame into a triangle store, sorted front to back,
 /// then drawn band by band by `mode`: `plain` (accumulated, no hidden-
 /// surface removal), `z1` (one z-buffer pass, anti-aliased), `z3` (the
-/// three passes of `draw_zbuffer`), `zal` (aliased z-buffer), `wa`
-/// (Weiler–Atherton's visible pieces, computed once, drawn per band).
+/// three passes of `draw_zbuffer`), `zal` (aliased z-buffer), `warnock`
+/// (Warnock's subdivision in every band), `wa` (Weiler–Atherton's visible
+/// pieces, computed once, drawn per band).
 #[inline(never)]
 fn render_torus_z(mode: &str) -> u64 {
     use softedge::hsr::{
-        draw_zbuffer, sort_front_to_back, DepthBuffer, DepthTriangle, VisibleSet, ZPass,
+        draw_warnock, draw_zbuffer, scratch_len, sort_front_to_back, DepthBuffer, DepthTriangle,
+        VisibleSet, ZPass,
     };
     use softedge::scene3d::{
         project_mesh, Angle, Camera, Light, Mesh, Shape, Transform, Vec3, ViewVertex, I16F16,
@@ -239,6 +241,7 @@ fn render_torus_z(mode: &str) -> u64 {
     if mode == "wa" && pieces.compute(&store).is_err() {
         return 0;
     }
+    let mut scratch = vec![0u16; scratch_len(store.len())];
     let mut acc = vec![0i32; BandBuffer::<3>::acc_len(W, BAND_ROWS)];
     let mut cover = vec![0i32; BandBuffer::<3>::cover_len(W, BAND_ROWS)];
     let mut depth = vec![0u16; DepthBuffer::len(W, BAND_ROWS)];
@@ -266,6 +269,9 @@ fn render_torus_z(mode: &str) -> u64 {
             }
             "wa" => {
                 let _ = pieces.draw(&store, &mut buf, &aa);
+            }
+            "warnock" => {
+                let _ = draw_warnock(&store, &mut buf, &mut scratch);
             }
             _ => {
                 let _ = draw_zbuffer(&store, &mut buf, &mut zbuf, &aa);
@@ -534,6 +540,7 @@ fn main() {
         ("zal", "z-buffer, aliased (one pass)"),
         ("z1", "z-buffer, anti-aliased, one pass"),
         ("z3", "z-buffer, anti-aliased, three passes (draw_zbuffer)"),
+        ("warnock", "Warnock's subdivision (per band)"),
         (
             "wa",
             "Weiler-Atherton (pieces once per frame, drawn per band)",

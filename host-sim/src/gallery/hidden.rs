@@ -2,9 +2,10 @@
 //! `examples/scenes/hidden_surfaces.toml`: a tilted torus, a sphere cutting
 //! into it, a cylinder through its hole and a card with per-corner depths
 //! slicing through the ring; without hidden-surface removal, with the
-//! z-buffer aliased and anti-aliased, with Weiler–Atherton's disjoint
-//! visible polygons (anti-aliased intersection curves too), and the
-//! section at depth 0.5.
+//! z-buffer aliased and anti-aliased, with Warnock's subdivision (edges
+//! resolved by area) and Weiler–Atherton's disjoint visible polygons
+//! (anti-aliased intersection curves too, with both), and the section at
+//! depth 0.5.
 
 use std::path::Path;
 
@@ -47,11 +48,16 @@ pub(super) fn variants(band_rows: u16) -> Result<Vec<(&'static str, Scene<3>)>, 
         hsr: Hsr::WeilerAtherton,
         ..z.clone()
     };
+    let warnock = Scene {
+        hsr: Hsr::Warnock,
+        ..z.clone()
+    };
     let section = scene("section.toml", SECTION)?.with_band_rows(band_rows);
     Ok(vec![
         ("NO HSR: SURFACES ADD", none),
         ("Z-BUFFER, ALIASED", aliased),
         ("Z-BUFFER, ANTI-ALIASED", z),
+        ("WARNOCK", warnock),
         ("WEILER-ATHERTON", weiler),
         ("SECTION AT DEPTH 0.5", section),
     ])
@@ -84,7 +90,7 @@ pub(super) fn sheet(
         panels = rest;
     }
     Ok(compose(
-        "HIDDEN SURFACES (SEED 004): NONE / Z-BUFFER / WEILER-ATHERTON / SECTION",
+        "HIDDEN SURFACES (SEED 004): NONE / Z-BUFFER / WARNOCK / WEILER-ATHERTON / SECTION",
         &rows,
     ))
 }

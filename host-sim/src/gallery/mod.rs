@@ -352,7 +352,7 @@ pub fn write_gallery(
 
     // (h) Hidden surfaces.
     log(&format!(
-        "[12/{n}] hidden surfaces: none | z-buffer aliased, AA | Weiler-Atherton | section"
+        "[12/{n}] hidden surfaces: none | z-buffer aliased, AA | Warnock | Weiler-Atherton | section"
     ));
     let sheet = hidden::sheet(opts.band_rows, scale, log)?;
     save(
