@@ -544,13 +544,15 @@ impl Checker<'_> {
                 "zbuffer" => Hsr::ZBuffer,
                 "weiler-atherton" => Hsr::WeilerAtherton,
                 "warnock" => Hsr::Warnock,
-                other => return self.err(
-                    m.span(),
-                    "render.hsr",
-                    format!(
+                other => {
+                    return self.err(
+                        m.span(),
+                        "render.hsr",
+                        format!(
                         "unknown method `{other}`; one of none, zbuffer, warnock, weiler-atherton"
                     ),
-                ),
+                    )
+                }
             },
         };
         let section = match &r.section {

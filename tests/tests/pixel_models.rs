@@ -354,6 +354,43 @@ fn small_objects_flicker_within_each_models_bound() {
     }
 }
 
+/// Seed 000's equal energy is a statement about points at the filter's
+/// sub-pixel resolution: moved by whole steps of its sample lattice, an
+/// object covers the same samples (the top-left rule is translation
+/// invariant), each of which spreads the same integer total, so the
+/// point-sampled models keep its summed intensity exactly, bit for bit.
+/// Lattice steps, sub-pixels: bed-of-nails 4x4 (8, 0) and (0, 8); 8x8
+/// (4, 0) and (0, 4); hexagonal (8, 0) and (4, 8) (a brick lattice).
+#[test]
+fn point_sampled_models_keep_energy_exactly_when_moved_by_lattice_steps() {
+    let lattices = [
+        (PixelModel::BedOfNails4, (8, 0), (0, 8)),
+        (PixelModel::BedOfNails8, (4, 0), (0, 4)),
+        (PixelModel::Hex7, (8, 0), (4, 8)),
+        (PixelModel::Hex19, (8, 0), (4, 8)),
+    ];
+    for (model, a, b) in lattices {
+        let mut energies = vec![];
+        for k in 0..4 {
+            for l in 0..4 {
+                let (dx, dy) = (k * a.0 + l * b.0 + 3, k * a.1 + l * b.1 + 5);
+                let p = |u: i32, v: i32| SubPoint::new(18 * 16 + dx + u, 18 * 16 + dy + v);
+                let f = frame(8, &|buf| {
+                    Triangle::flat([p(0, 0), p(29, 7), p(9, 23)], [4095])
+                        .draw(buf, &style(model))
+                        .unwrap();
+                });
+                energies.push(energy(&f));
+            }
+        }
+        assert!(energies[0] > 0, "{model:?}");
+        assert!(
+            energies.iter().all(|&e| e == energies[0]),
+            "{model:?}: {energies:?}"
+        );
+    }
+}
+
 /// The circular filters' formulas, written here with `std` (independent of
 /// core's `const` series): `(filter, width in px, F(x, y))`.
 fn circular_references() -> [(CircularFilter, usize, Formula); 3] {
