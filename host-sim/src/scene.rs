@@ -52,6 +52,9 @@ pub enum Primitive<const C: usize> {
     },
     /// A 1-px line.
     Line(Line<C>),
+    /// A 1-px line with a depth at each end (scene files' `depths`);
+    /// without hidden-surface removal it is drawn as a plain line.
+    DepthLine(Line<C>, [u16; 2]),
     /// A triangle with a depth per vertex (3D objects, or 2D primitives
     /// given `depths`); without hidden-surface removal it is drawn as a
     /// plain triangle.
@@ -73,7 +76,7 @@ impl<const C: usize> Primitive<C> {
         match self {
             Self::Triangle(t) => t.draw(buf, style),
             Self::Depth(t) => t.draw(buf, style),
-            Self::Line(l) => l.draw(buf, style),
+            Self::Line(l) | Self::DepthLine(l, _) => l.draw(buf, style),
             Self::Polygon { vertices, colors } => {
                 let colors = match colors {
                     PolyColors::Flat(c) => PolygonColors::Flat(*c),
@@ -85,9 +88,8 @@ impl<const C: usize> Primitive<C> {
     }
 
     /// The primitive as depth triangles (2D primitives without depths lie
-    /// at depth 0, the farthest); a line has no depth and no area to hide
-    /// behind: [`RenderError::LineWithHsr`] is reported by the caller.
-    fn depth_triangles(&self, out: &mut Vec<DepthTriangle<C>>) -> Result<bool, DrawError> {
+    /// at depth 0, the farthest; a line is its 1-px rectangle).
+    fn depth_triangles(&self, out: &mut Vec<DepthTriangle<C>>) -> Result<(), DrawError> {
         match self {
             Self::Triangle(t) => out.push(DepthTriangle::new(t.vertices, t.colors, [0; 3])),
             Self::Depth(t) => out.push(*t),
@@ -99,9 +101,10 @@ impl<const C: usize> Primitive<C> {
                 let zeros = vec![0u16; vertices.len()];
                 Polygon::new(vertices, colors).depth_triangles(&zeros, |t| out.push(t))?;
             }
-            Self::Line(_) => return Ok(false),
+            Self::Line(l) => l.depth_triangles([0; 2], |t| out.push(t))?,
+            Self::DepthLine(l, z) => l.depth_triangles(*z, |t| out.push(t))?,
         }
-        Ok(true)
+        Ok(())
     }
 }
 
@@ -204,12 +207,6 @@ pub enum RenderError {
     },
     /// The post-filter rejected the frame size or its buffers.
     Filter(FilterError),
-    /// Hidden-surface removal or section mode was asked for a scene with a
-    /// line (lines have no depth).
-    LineWithHsr {
-        /// Its index in [`Scene::primitives`].
-        index: usize,
-    },
     /// A hidden-surface method failed.
     Hsr(HsrError),
 }
@@ -224,11 +221,6 @@ impl fmt::Display for RenderError {
             ),
             Self::Draw { index, error } => write!(f, "primitive #{index} rejected: {error:?}"),
             Self::Filter(error) => write!(f, "lightness filter rejected the frame: {error:?}"),
-            Self::LineWithHsr { index } => write!(
-                f,
-                "primitive #{index} is a line: lines have no depth, so hidden-surface removal \
-                 and section mode take triangles, polygons and objects only"
-            ),
             Self::Hsr(error) => write!(f, "hidden-surface removal failed: {error:?}"),
         }
     }
@@ -287,8 +279,7 @@ impl<const C: usize> Prepared<C> {
         for (index, p) in scene.primitives.iter().enumerate() {
             one.clear();
             match p.depth_triangles(&mut one) {
-                Ok(true) => tris.extend(one.iter().map(|&t| (t, index))),
-                Ok(false) => return Err(RenderError::LineWithHsr { index }),
+                Ok(()) => tris.extend(one.iter().map(|&t| (t, index))),
                 Err(error) => return Err(RenderError::Draw { index, error }),
             }
         }

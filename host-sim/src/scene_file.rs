@@ -260,18 +260,6 @@ impl SceneFile {
                 });
                 src.error(origin.span, origin.field, draw_error_text(error))
             }
-            RenderError::LineWithHsr { index } => {
-                let origin = self.origins.get(index).cloned().unwrap_or(Origin {
-                    field: format!("primitive #{index}"),
-                    span: 0..0,
-                });
-                src.error(
-                    origin.span,
-                    origin.field,
-                    "a line has no depth: with `[render] hsr` or `section` draw \
-                     triangles, polygons and objects only",
-                )
-            }
             other => src.error(0..0, "display", other.to_string()),
         }
     }
@@ -698,7 +686,14 @@ impl Checker<'_> {
                 PolyColors::Flat(c) => [c; 2],
                 PolyColors::PerVertex(cs) => [cs[0], cs[1]],
             };
-            let p = Primitive::Line(Line::new(from, to, colors));
+            let line = Line::new(from, to, colors);
+            let p = match &lr.depths {
+                None => Primitive::Line(line),
+                Some(d) => {
+                    let z = self.depths(d, &format!("{field}.depths"), 2)?;
+                    Primitive::DepthLine(line, [z[0], z[1]])
+                }
+            };
             items.push((
                 Origin {
                     field,

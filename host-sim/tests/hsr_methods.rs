@@ -81,3 +81,34 @@ fn every_method_gives_the_same_frame_for_every_band_height() {
         }
     }
 }
+
+/// Lines take part in hidden-surface removal by their `depths`: a line in
+/// front of a card shows over it, the same line behind it is hidden; a
+/// line without depths lies at depth 0, behind everything.
+#[test]
+fn lines_are_hidden_by_their_depths() {
+    let scene = |line_depths: &str| {
+        format!(
+            "[display]\nwidth = 24\nheight = 16\nformat = \"gray8\"\nbackground = [0]\n\
+             [render]\nhsr = \"zbuffer\"\n\
+             [[polygon]]\npoints = [[2, 2], [22, 2], [22, 14], [2, 14]]\ncolor = [1000]\n\
+             depths = [0.5, 0.5, 0.5, 0.5]\n\
+             [[line]]\nfrom = [0, 8]\nto = [24, 8]\ncolor = [4000]\n{line_depths}"
+        )
+    };
+    let value = |text: &str| {
+        let file = parse(Path::new("line.toml"), text).unwrap();
+        let Frame::Gray(s) = &file.frame else {
+            panic!("gray")
+        };
+        let img = render(s).unwrap();
+        // Pixel (12, 7): the line covers its lower half (y 7.5..8.5).
+        img.get(12, 7)[0]
+    };
+    let front = value(&scene("depths = [0.9, 0.9]\n"));
+    let behind = value(&scene("depths = [0.1, 0.1]\n"));
+    let none = value(&scene(""));
+    assert_eq!(front, 2500, "half line (4000), half card (1000)");
+    assert_eq!(behind, 1000);
+    assert_eq!(none, 1000);
+}

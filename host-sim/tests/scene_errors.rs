@@ -306,12 +306,11 @@ fn hidden_surface_keys() {
         "polygon[0].depths[3]",
         "outside",
     );
-    // A line has no depth: rejected where it stands once hsr is on.
     expect(
-        &format!("{HEAD}[render]\nhsr = \"zbuffer\"\n[[line]]\nfrom = [0, 0]\nto = [4, 4]\ncolor = [9]\n"),
-        7,
-        "line[0]",
-        "no depth",
+        &format!("{HEAD}[render]\nhsr = \"zbuffer\"\n[[line]]\nfrom = [0, 0]\nto = [4, 4]\ncolor = [9]\ndepths = [0.5]\n"),
+        11,
+        "line[0].depths",
+        "one depth per point",
     );
     expect(
         &format!(

@@ -382,6 +382,62 @@ impl<const C: usize> Line<C> {
 
     /// Accumulates the line into the band.
     pub fn draw(&self, band: &mut BandBuffer<'_, C>, style: &RenderStyle) -> Result<(), DrawError> {
+        let Some((quad, ideal, actual)) = self.rectangle()? else {
+            return Ok(());
+        };
+        let [c0, c1] = self.colors;
+        let Some(plane) =
+            Plane::triangle([quad[0], quad[1], quad[2]], [c0, c1, c1], band.background())
+        else {
+            return Ok(());
+        };
+        // Rounding the corners to 1/16 px changes the rectangle's area by up
+        // to a few per cent, depending on the angle: scale the intensity
+        // once by ideal / actual area so the line's energy is exact.
+        // (Aliased lines keep their colour: their energy is a pixel count.)
+        let plane = if style.antialias {
+            plane.scaled(ideal, actual)
+        } else {
+            plane
+        };
+        fill(band, &quad, &plane, style);
+        Ok(())
+    }
+
+    /// The line's rectangle as two triangles with a depth at each end
+    /// (`depths[0]` at `from`), for hidden-surface removal
+    /// ([`hsr`](crate::hsr)). The rectangle is the one [`draw`](Self::draw)
+    /// fills; its intensity is not rescaled to the ideal area (the depth
+    /// triangles do not know the band's background), so its energy may
+    /// differ from length times colour by the rounding of its corners to
+    /// 1/16 px (a few per cent at some angles).
+    pub fn depth_triangles(
+        &self,
+        depths: [u16; 2],
+        mut emit: impl FnMut(crate::hsr::DepthTriangle<C>),
+    ) -> Result<(), DrawError> {
+        let Some((q, _, _)) = self.rectangle()? else {
+            return Ok(());
+        };
+        let [c0, c1] = self.colors;
+        let [z0, z1] = depths;
+        emit(crate::hsr::DepthTriangle::new(
+            [q[0], q[1], q[2]],
+            [c0, c1, c1],
+            [z0, z1, z1],
+        ));
+        emit(crate::hsr::DepthTriangle::new(
+            [q[0], q[2], q[3]],
+            [c0, c1, c0],
+            [z0, z1, z0],
+        ));
+        Ok(())
+    }
+
+    /// The rectangle of width 1 px centred on the segment, corners rounded
+    /// to 1/16 px, with its ideal and its actual area (in the same units),
+    /// or `None` for a zero-length line.
+    fn rectangle(&self) -> Result<Option<([SubPoint; 4], i64, i64)>, DrawError> {
         self.from.check()?;
         self.to.check()?;
         let (dx, dy) = (
@@ -390,7 +446,7 @@ impl<const C: usize> Line<C> {
         );
         let len = ((dx * dx + dy * dy) as u64).isqrt() as i64;
         if len == 0 {
-            return Ok(());
+            return Ok(None);
         }
         // Half the width, 1/2 px, along the normal; rounded to 1/16 px.
         let half = i64::from(crate::SUB_ONE / 2);
@@ -403,26 +459,10 @@ impl<const C: usize> Line<C> {
             SubPoint::new(b.x - nx, b.y - ny),
             SubPoint::new(a.x - nx, a.y - ny),
         ];
-        let [c0, c1] = self.colors;
-        let Some(plane) =
-            Plane::triangle([quad[0], quad[1], quad[2]], [c0, c1, c1], band.background())
-        else {
-            return Ok(());
-        };
-        // Rounding the corners to 1/16 px changes the rectangle's area by up
-        // to a few per cent, depending on the angle: scale the intensity
-        // once by ideal / actual area so the line's energy is exact.
         let len_256 = (((dx * dx + dy * dy) as u64) << 16).isqrt() as i64;
         let ideal = i64::from(crate::SUB_ONE) * len_256;
         let actual = 2 * (dx * i64::from(ny) - dy * i64::from(nx)).abs() * 256;
-        // (Aliased lines keep their colour: their energy is a pixel count.)
-        let plane = if style.antialias {
-            plane.scaled(ideal, actual)
-        } else {
-            plane
-        };
-        fill(band, &quad, &plane, style);
-        Ok(())
+        Ok(Some((quad, ideal, actual)))
     }
 }
 

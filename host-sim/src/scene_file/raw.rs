@@ -120,6 +120,7 @@ pub struct Line {
     pub to: Nums,
     pub colors: Option<Colors>,
     pub color: Option<Color>,
+    pub depths: Option<Nums>,
 }
 
 /// `[camera]`.
