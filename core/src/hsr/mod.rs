@@ -2,8 +2,13 @@
 //! methods that keep only what is nearest.
 //!
 //! Takes [`DepthTriangle`]s (from 3D objects, [`scene3d`](crate::scene3d),
-//! or 2D primitives with depths, [`Polygon::depth_triangles`](crate::Polygon::depth_triangles)); gives the
-//! visible surfaces, anti-aliased, in the band's accumulator.
+//! or 2D primitives with depths:
+//! [`Polygon::depth_triangles`](crate::Polygon::depth_triangles),
+//! [`Line::depth_triangles`](crate::Line::depth_triangles)); gives the
+//! visible surfaces, anti-aliased, in the band's accumulator, by one of
+//! four methods: the z-buffer in bands ([`draw_zbuffer`]), section mode
+//! ([`DepthTriangle::section`]), Warnock's subdivision ([`draw_warnock`])
+//! and Weiler–Atherton clipping ([`VisibleSet`]).
 //!
 //! **Depth**: `u16` per vertex, **larger is nearer** (seed 004's `z > Z`
 //! wins; "reverse Z"); 0 is the farthest depth and the background's. Depth
