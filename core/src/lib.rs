@@ -18,9 +18,15 @@
 //! 4. [`band`]: the caller-provided accumulation buffer of one band of rows,
 //!    `I_acc += I * S` (seed 000, eq. 3), the span sweep that fills interior
 //!    pixels, and the one rounding of the frame, at resolve.
-//! 5. [`raster`]: the primitives users draw (triangles, polygons, lines).
-//! 6. [`tone`]: γ tables and logarithmic intensity codes (seed 000).
-//! 7. `eg` (feature `embedded-graphics`, on by default): flushing each
+//! 5. [`raster`]: the primitives users draw (triangles, polygons, lines),
+//!    with the pixel models of [`pixel_model`] (bed-of-nails, hexagonal,
+//!    circular filters; seeds 000 and 003).
+//! 6. [`hsr`]: hidden surfaces (seed 004) for primitives with depths and
+//!    the 3D objects of [`scene3d`]: the z-buffer in bands, section mode,
+//!    Warnock's subdivision, Weiler–Atherton clipping.
+//! 7. [`postfilter`]: seed 002's lightness-adaptive smoothing (optional).
+//! 8. [`tone`]: γ tables and logarithmic intensity codes (seed 000).
+//! 9. `eg` (feature `embedded-graphics`, on by default): flushing each
 //!    finished band to any embedded-graphics `DrawTarget`.
 //!
 //! ```
