@@ -34,9 +34,16 @@ fn cut<const C: usize>(
     } else {
         (b, a)
     };
-    let num = i64::from(z) - i64::from(a.2);
-    let den = i64::from(b.2) - i64::from(a.2);
-    let lerp = |p: i64, q: i64| p + div_floor(2 * (q - p) * num + den.signum() * den, 2 * den);
+    // t = num / den in [0, 1], den > 0 after the sign is moved to num.
+    let (mut num, mut den) = (
+        i64::from(z) - i64::from(a.2),
+        i64::from(b.2) - i64::from(a.2),
+    );
+    if den < 0 {
+        (num, den) = (-num, -den);
+    }
+    // p + (q - p) t, rounded to nearest (halves up).
+    let lerp = |p: i64, q: i64| p + div_floor(2 * (q - p) * num + den, 2 * den);
     let p = SubPoint::new(
         lerp(i64::from(a.0.x), i64::from(b.0.x)) as i32,
         lerp(i64::from(a.0.y), i64::from(b.0.y)) as i32,
