@@ -278,10 +278,19 @@ impl<const C: usize> Prepared<C> {
         let mut one = Vec::new();
         for (index, p) in scene.primitives.iter().enumerate() {
             one.clear();
-            match p.depth_triangles(&mut one) {
-                Ok(()) => tris.extend(one.iter().map(|&t| (t, index))),
-                Err(error) => return Err(RenderError::Draw { index, error }),
+            p.depth_triangles(&mut one)
+                .map_err(|error| RenderError::Draw { index, error })?;
+            // Checked here, so a bad vertex is reported with its primitive
+            // whichever method draws the frame.
+            for t in &one {
+                for v in t.vertices {
+                    v.check().map_err(|e| RenderError::Draw {
+                        index,
+                        error: DrawError::Coord(e),
+                    })?;
+                }
             }
+            tris.extend(one.iter().map(|&t| (t, index)));
         }
         if let Some(z) = scene.section {
             let mut out = Vec::new();
@@ -533,6 +542,34 @@ mod tests {
             }
         );
         assert!(err.to_string().contains("#2"));
+    }
+
+    /// With hidden-surface removal a vertex out of range is reported with
+    /// its own primitive, by every method.
+    #[test]
+    fn out_of_range_vertex_is_reported_with_its_index_by_every_method() {
+        let mut s = star_scene();
+        let far = SubPoint::new(40_000, 0);
+        s.primitives.push(Primitive::Depth(DepthTriangle::new(
+            [SubPoint::from_px(1, 1), far, SubPoint::from_px(1, 9)],
+            [[9; 3]; 3],
+            [5; 3],
+        )));
+        for hsr in [Hsr::ZBuffer, Hsr::Warnock, Hsr::WeilerAtherton] {
+            let Err(err) = render(&Scene { hsr, ..s.clone() }) else {
+                panic!("{hsr:?}: a vertex out of range was drawn");
+            };
+            assert!(
+                matches!(
+                    err,
+                    RenderError::Draw {
+                        index: 2,
+                        error: DrawError::Coord(_)
+                    }
+                ),
+                "{hsr:?}: {err:?}"
+            );
+        }
     }
 
     /// Light, thin, colourful shapes: most pixels have `L*` where table
