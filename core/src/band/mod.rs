@@ -295,6 +295,33 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
     }
 }
 
+impl<const C: usize> BandBuffer<'_, C> {
+    /// The frame rows `y_lo..y_hi` clipped to the band (for the sweeps).
+    fn rows_in_band(&self, y_lo: i32, y_hi: i32) -> core::ops::Range<i32> {
+        y_lo.max(self.band.y0)..y_hi.min(self.band.y0 + i32::from(self.band.rows))
+    }
+}
+
+/// Row `r` of the cover scratch for a sweep: its cover changes and their
+/// column extent `lo..=hi`, the extent reset for the next primitive (the
+/// sweep clears the changes as it reads them). `None` when the row has no
+/// changes. Events were clamped into the band at insertion, so
+/// `0 <= lo <= hi < w`.
+fn take_row(cover: &mut [i32], r: usize, w: usize) -> Option<(&mut [i32], usize, usize)> {
+    let start = r * (w + 2);
+    let row = cover.get_mut(start..start + w + 2)?;
+    let (deltas, ext) = row.split_at_mut(w);
+    let (lo, hi) = (
+        core::mem::replace(&mut ext[0], i32::MAX),
+        core::mem::replace(&mut ext[1], i32::MIN),
+    );
+    if lo > hi {
+        return None;
+    }
+    let (lo, hi) = (lo.max(0) as usize, (hi.max(0) as usize).min(w - 1));
+    Some((deltas, lo, hi))
+}
+
 /// Rounds an accumulated value to linear 12 bits: the pipeline's one rounding.
 #[inline]
 fn resolve(acc: i32) -> u16 {

@@ -32,25 +32,13 @@ impl<const C: usize> BandBuffer<'_, C> {
         pass: ZPass,
     ) {
         let w = usize::from(self.band.width);
-        let y_lo = y_lo.max(self.band.y0);
-        let y_hi = y_hi.min(self.band.y0 + i32::from(self.band.rows));
         let bg = self.background.map(|b| i32::from(b) << COVER_BITS);
         let full = i32::from(FULL);
-        for y in y_lo..y_hi {
+        for y in self.rows_in_band(y_lo, y_hi) {
             let r = (y - self.band.y0) as usize;
-            let scratch = r * (w + 2);
-            let Some(row_cover) = self.cover.get_mut(scratch..scratch + w + 2) else {
+            let Some((deltas, lo, hi)) = super::take_row(self.cover, r, w) else {
                 continue;
             };
-            let (deltas, ext) = row_cover.split_at_mut(w);
-            let (lo, hi) = (
-                core::mem::replace(&mut ext[0], i32::MAX),
-                core::mem::replace(&mut ext[1], i32::MIN),
-            );
-            if lo > hi {
-                continue;
-            }
-            let (lo, hi) = (lo.max(0) as usize, (hi.max(0) as usize).min(w - 1));
             let (Some(row_acc), Some((zrow, krow))) = (
                 self.acc.get_mut(r * w * C..(r + 1) * w * C),
                 zbuf.row_mut(r),
