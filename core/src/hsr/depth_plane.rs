@@ -1,9 +1,13 @@
 //! Setup: the depth plane of a triangle, `z(i, j)` at pixel centres.
 
 use crate::geom::SubPoint;
+use crate::shade::{div_round, PlaneFit};
 
 /// Fraction bits of the fine depth values the sweep steps.
 pub const DEPTH_FRAC: u32 = 16;
+
+// The fit is shared with the Gouraud plane, in its fixed point.
+const _: () = assert!(DEPTH_FRAC == crate::shade::PLANE_FRAC);
 
 /// Steepest depth gradient kept, in fine units per pixel: 2^24 depth steps
 /// (256 times the whole depth range) per pixel, so `gx * di` stays below
@@ -36,11 +40,6 @@ pub struct DepthPlane {
     pub hi: u16,
 }
 
-/// `round(n / d)` for `d > 0`.
-fn div_round(n: i64, d: i64) -> i64 {
-    crate::arith::div_floor(2 * n + d, 2 * d)
-}
-
 impl DepthPlane {
     /// One depth everywhere.
     pub const fn flat(z: u16) -> Self {
@@ -59,33 +58,15 @@ impl DepthPlane {
     /// triangle of zero area. Vertices must be inside the coordinate range
     /// ([`SubPoint::check`]); every product then stays below `2^54`.
     pub fn triangle(v: [SubPoint; 3], z: [u16; 3]) -> Option<Self> {
-        let (x0, y0) = (i64::from(v[0].x), i64::from(v[0].y));
-        let (dx1, dy1) = (i64::from(v[1].x) - x0, i64::from(v[1].y) - y0);
-        let (dx2, dy2) = (i64::from(v[2].x) - x0, i64::from(v[2].y) - y0);
-        let mut d = dx1 * dy2 - dx2 * dy1;
-        if d == 0 {
-            return None;
-        }
-        let sign = d.signum();
-        d *= sign;
+        let fit = PlaneFit::new(v)?;
         let lo = z[0].min(z[1]).min(z[2]);
         let hi = z[0].max(z[1]).max(z[2]);
-        let (z0, dz1, dz2) = (
-            i64::from(z[0]),
-            i64::from(z[1]) - i64::from(z[0]),
-            i64::from(z[2]) - i64::from(z[0]),
-        );
-        let one = 1i64 << DEPTH_FRAC;
-        let per_px = i64::from(crate::SUB_ONE);
-        // dz/dx = a / d and dz/dy = b / d per sub-pixel unit.
-        let a = sign * (dz1 * dy2 - dz2 * dy1);
-        let b = sign * (dz2 * dx1 - dz1 * dx2);
-        let gx = div_round(a * per_px * one, d);
-        let gy = div_round(b * per_px * one, d);
-        let i0 = v[0].x >> crate::SUB_BITS;
-        let j0 = v[0].y >> crate::SUB_BITS;
+        let f = z.map(i64::from);
+        let (at0, gx, gy) = fit.values(f);
+        let (i0, j0) = (fit.i0, fit.j0);
         if gx.abs() > GRAD_LIMIT || gy.abs() > GRAD_LIMIT {
-            let mean = div_round((z0 + i64::from(z[1]) + i64::from(z[2])) * one, 3);
+            let one = 1i64 << DEPTH_FRAC;
+            let mean = div_round((f[0] + f[1] + f[2]) * one, 3);
             return Some(Self {
                 i0,
                 j0,
@@ -96,10 +77,6 @@ impl DepthPlane {
                 hi,
             });
         }
-        let half = i64::from(crate::SUB_ONE / 2);
-        let cx = i64::from(i0) * per_px + half - x0;
-        let cy = i64::from(j0) * per_px + half - y0;
-        let at0 = z0 * one + div_round((a * cx + b * cy) * one, d);
         Some(Self {
             i0,
             j0,

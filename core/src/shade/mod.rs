@@ -52,8 +52,76 @@ pub struct Plane<const C: usize> {
 }
 
 /// `round(n / d)` for `d > 0`, halves away from minus infinity.
-fn div_round(n: i64, d: i64) -> i64 {
+pub(crate) fn div_round(n: i64, d: i64) -> i64 {
     crate::arith::div_floor(2 * n + d, 2 * d)
+}
+
+/// The set-up shared by every plane through a triangle's vertices (Gouraud
+/// intensity here, depth in [`hsr`](crate::hsr)): its reference pixel and
+/// the fit of three vertex values, in 16.16 fixed point, rounded once.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct PlaneFit {
+    /// Reference pixel: the one holding vertex 0.
+    pub(crate) i0: i32,
+    /// Reference pixel row.
+    pub(crate) j0: i32,
+    dx1: i64,
+    dy1: i64,
+    dx2: i64,
+    dy2: i64,
+    /// `|2 * area|` in sub-pixels², and the sign that made it positive.
+    d: i64,
+    sign: i64,
+    /// Offset of the reference pixel's centre from vertex 0, sub-pixels.
+    cx: i64,
+    cy: i64,
+}
+
+impl PlaneFit {
+    /// `None` for a triangle of zero area. Vertices within the coordinate
+    /// range keep every product of [`values`](Self::values) below `2^54`
+    /// for values below `2^16`.
+    pub(crate) fn new(v: [SubPoint; 3]) -> Option<Self> {
+        let (x0, y0) = (i64::from(v[0].x), i64::from(v[0].y));
+        let (dx1, dy1) = (i64::from(v[1].x) - x0, i64::from(v[1].y) - y0);
+        let (dx2, dy2) = (i64::from(v[2].x) - x0, i64::from(v[2].y) - y0);
+        let d = dx1 * dy2 - dx2 * dy1;
+        if d == 0 {
+            return None;
+        }
+        let i0 = v[0].x >> crate::SUB_BITS;
+        let j0 = v[0].y >> crate::SUB_BITS;
+        let half = i64::from(crate::SUB_ONE / 2);
+        let per_px = i64::from(crate::SUB_ONE);
+        Some(Self {
+            i0,
+            j0,
+            dx1,
+            dy1,
+            dx2,
+            dy2,
+            d: d.abs(),
+            sign: d.signum(),
+            cx: i64::from(i0) * per_px + half - x0,
+            cy: i64::from(j0) * per_px + half - y0,
+        })
+    }
+
+    /// For values `f` at the three vertices: the plane at the reference
+    /// pixel's centre, and its change per pixel right and down, all times
+    /// `2^16`, each rounded once.
+    pub(crate) fn values(&self, f: [i64; 3]) -> (i64, i64, i64) {
+        let (df1, df2) = (f[1] - f[0], f[2] - f[0]);
+        let one = 1i64 << PLANE_FRAC;
+        let per_px = i64::from(crate::SUB_ONE);
+        // df/dx = a / d and df/dy = b / d per sub-pixel unit.
+        let a = self.sign * (df1 * self.dy2 - df2 * self.dy1);
+        let b = self.sign * (df2 * self.dx1 - df1 * self.dx2);
+        let gx = div_round(a * per_px * one, self.d);
+        let gy = div_round(b * per_px * one, self.d);
+        let at = f[0] * one + div_round((a * self.cx + b * self.cy) * one, self.d);
+        (at, gx, gy)
+    }
 }
 
 impl<const C: usize> Plane<C> {
@@ -75,49 +143,28 @@ impl<const C: usize> Plane<C> {
     /// The plane through three vertices and their colours, or `None` when
     /// the triangle has zero area.
     pub fn triangle(v: [SubPoint; 3], colors: [[u16; C]; 3], background: [u16; C]) -> Option<Self> {
-        let (x0, y0) = (i64::from(v[0].x), i64::from(v[0].y));
-        let (dx1, dy1) = (i64::from(v[1].x) - x0, i64::from(v[1].y) - y0);
-        let (dx2, dy2) = (i64::from(v[2].x) - x0, i64::from(v[2].y) - y0);
-        let mut d = dx1 * dy2 - dx2 * dy1;
-        if d == 0 {
-            return None;
-        }
-        let sign = d.signum();
-        d *= sign;
-        let i0 = v[0].x >> crate::SUB_BITS;
-        let j0 = v[0].y >> crate::SUB_BITS;
-        // Offset of the reference pixel's centre from vertex 0, sub-pixels.
-        let half = i64::from(crate::SUB_ONE / 2);
-        let cx = i64::from(i0) * i64::from(crate::SUB_ONE) + half - x0;
-        let cy = i64::from(j0) * i64::from(crate::SUB_ONE) + half - y0;
+        let fit = PlaneFit::new(v)?;
         let one = 1i64 << PLANE_FRAC;
-        let per_px = i64::from(crate::SUB_ONE);
         let mut plane = Self {
-            i0,
-            j0,
+            i0: fit.i0,
+            j0: fit.j0,
             at0: [0; C],
             gx: [0; C],
             gy: [0; C],
         };
         for ch in 0..C {
             let c = |k: usize| i64::from(colors[k][ch].min(LIN_MAX));
-            let (di1, di2) = (c(1) - c(0), c(2) - c(0));
-            // dI/dx = a / d and dI/dy = b / d per sub-pixel unit.
-            let a = sign * (di1 * dy2 - di2 * dy1);
-            let b = sign * (di2 * dx1 - di1 * dx2);
             let bg = i64::from(background[ch].min(LIN_MAX));
-            let gx = div_round(a * per_px * one, d);
-            let gy = div_round(b * per_px * one, d);
+            let (at, gx, gy) = fit.values([c(0), c(1), c(2)]);
             if gx.abs() > GRAD_LIMIT || gy.abs() > GRAD_LIMIT {
                 // Thinner than a pixel: flat, at the plane's mean.
                 let mean = div_round((c(0) + c(1) + c(2)) * one, 3);
                 plane.at0[ch] = (mean - bg * one) as i32;
                 continue;
             }
-            let at0 = (c(0) - bg) * one + div_round((a * cx + b * cy) * one, d);
             plane.gx[ch] = gx as i32;
             plane.gy[ch] = gy as i32;
-            plane.at0[ch] = at0 as i32;
+            plane.at0[ch] = (at - bg * one) as i32;
         }
         Some(plane)
     }
