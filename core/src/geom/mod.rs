@@ -18,6 +18,10 @@
 
 use fixed::types::I28F4;
 
+mod fine;
+
+pub use fine::{FinePoint, PathSink, FINE_BITS, FINE_LIMIT, FINE_ONE};
+
 /// Fractional bits of a sub-pixel coordinate.
 pub const SUB_BITS: u32 = 4;
 /// One pixel in sub-pixel units.
