@@ -61,6 +61,8 @@
 #![allow(clippy::needless_range_loop)]
 
 mod arith;
+pub mod style;
+mod units;
 pub mod band;
 pub mod edge;
 #[cfg(feature = "embedded-graphics")]
@@ -82,12 +84,4 @@ pub use raster::{
 };
 pub use shade::LIN_MAX;
 
-/// Coverage of one whole pixel in the units every stage uses: `4096 = 2^12`.
-///
-/// Edge-pixel areas are floors in these units (error below 3/4096 px per
-/// edge, far inside the 1/256 the box model promises); a pixel value in the
-/// accumulation buffer is `lin12 * coverage`, so a fully covered pixel of
-/// intensity 4095 holds `4095 * 4096 < 2^24`.
-pub const COVER_ONE: i32 = 1 << COVER_BITS;
-/// `log2(COVER_ONE)`.
-pub const COVER_BITS: u32 = 12;
+pub use units::{COVER_BITS, COVER_ONE};

@@ -5,7 +5,7 @@
 //!
 //! - pixel `(i, j)` is the square `[16 i, 16 i + 16] x [16 j, 16 j + 16]` in
 //!   sub-pixel units (1/16 px), so one pixel is 256 sub² and an area in sub²
-//!   times 16 is an area in 1/4096 px (the unit of `softedge::COVER_ONE`);
+//!   times 16 is an area in 1/65536 px (the unit of `softedge::COVER_ONE`);
 //! - the coverage of a pixel by a polygon is the area of their intersection,
 //!   found by Sutherland–Hodgman clipping of the polygon against the four
 //!   sides of the pixel (each side is a half-plane), with every coordinate an
@@ -115,9 +115,10 @@ pub fn y_at_most(y1: i64) -> HalfPlane {
     HalfPlane { a: 0, b: -1, c: y1 }
 }
 
-/// Converts an area in sub² to 1/4096 px (exact).
+/// Converts an area in sub² (1/256 px²) to coverage units, 1/65536 px
+/// (exact).
 pub fn sub2_to_cover(a: &Q) -> Q {
-    a * q(16)
+    a * q(256)
 }
 
 /// Exact coverage of every pixel of a frame by a simple polygon (vertices in
@@ -128,7 +129,7 @@ pub struct CoverageMap {
     pub width: i32,
     /// Frame height in pixels.
     pub height: i32,
-    /// Row-major areas in 1/4096 px, exact.
+    /// Row-major areas in 1/65536 px, exact.
     pub cover: Vec<Q>,
 }
 
@@ -176,7 +177,7 @@ impl CoverageMap {
                 let k = (j * width + i) as usize;
                 if !touched[(i - i_lo) as usize] {
                     if centre_inside_top_left(poly, i64::from(i), i64::from(j)) {
-                        cover[k] = q(4096);
+                        cover[k] = q(65536);
                     }
                     continue;
                 }
@@ -194,7 +195,7 @@ impl CoverageMap {
         }
     }
 
-    /// Exact coverage of pixel `(i, j)` in 1/4096 px.
+    /// Exact coverage of pixel `(i, j)` in 1/65536 px.
     pub fn at(&self, i: i32, j: i32) -> &Q {
         &self.cover[(j * self.width + i) as usize]
     }
@@ -204,7 +205,7 @@ fn minmax(it: impl Iterator<Item = i64>) -> (i64, i64) {
     it.fold((i64::MAX, i64::MIN), |(lo, hi), v| (lo.min(v), hi.max(v)))
 }
 
-/// The exact area, in 1/4096 px, of the part of pixel `(i, j)` that lies
+/// The exact area, in 1/65536 px, of the part of pixel `(i, j)` that lies
 /// inside the y-range of the edge `p0 -> p1` and right of (larger x than)
 /// the edge's line. Horizontal edges cut off nothing.
 pub fn edge_right_area(p0: (i64, i64), p1: (i64, i64), i: i64, j: i64) -> Q {

@@ -2,7 +2,7 @@
 
 use std::collections::BTreeMap;
 
-use softedge::edge::EdgeSink;
+use softedge::edge::CoverSink;
 use softedge::{BandBuffer, Bands, SubPoint};
 
 /// A whole frame read back from its bands.
@@ -72,41 +72,34 @@ pub fn sub_points(v: &[(i64, i64)]) -> Vec<SubPoint> {
 
 /// One reported edge cell.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Cell<const C: usize> {
+pub struct Cell {
     /// Pixel column.
     pub x: i32,
     /// Pixel row.
     pub y: i32,
-    /// Signed coverage, 1/4096 px.
+    /// Signed coverage, 1/65536 px.
     pub coverage: i32,
-    /// `I * coverage` per channel, accumulation units.
-    pub value: [i32; C],
 }
 
 /// Records everything an edge walk reports.
 #[derive(Debug, Clone, Default)]
-pub struct Recorder<const C: usize> {
+pub struct Recorder {
     /// Cells in the order reported.
-    pub cells: Vec<Cell<C>>,
+    pub cells: Vec<Cell>,
     /// Cover changes `(x, y, delta)` in the order reported.
     pub covers: Vec<(i32, i32, i32)>,
 }
 
-impl<const C: usize> EdgeSink<C> for Recorder<C> {
-    fn cell(&mut self, x: i32, y: i32, coverage: i32, value: &[i32; C]) {
-        self.cells.push(Cell {
-            x,
-            y,
-            coverage,
-            value: *value,
-        });
+impl CoverSink for Recorder {
+    fn cell(&mut self, x: i32, y: i32, coverage: i32) {
+        self.cells.push(Cell { x, y, coverage });
     }
     fn cover(&mut self, x: i32, y: i32, delta: i32) {
         self.covers.push((x, y, delta));
     }
 }
 
-impl<const C: usize> Recorder<C> {
+impl Recorder {
     /// The walk's signed area per pixel: `Σ cells at (x, y) + Σ cover deltas
     /// at columns <= x of row y`, for `x` in `x_lo..=x_hi`, per row that the
     /// walk mentions. Returned as `row -> areas[x - x_lo]`.

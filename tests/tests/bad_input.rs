@@ -72,7 +72,7 @@ fn guarded<const C: usize, T>(
 }
 
 fn band(y0: i32, rows: u16) -> Band {
-    Band { width: W, y0, rows }
+    Band::new(W, y0, rows)
 }
 
 fn p(x: i32, y: i32) -> SubPoint {
@@ -430,11 +430,7 @@ fn short_buffers_and_bad_bands_are_errors() {
     );
     for bad in [
         band(0, 0),
-        Band {
-            width: 0,
-            y0: 0,
-            rows: 4,
-        },
+        Band::new(0, 0, 4),
         band(i32::MAX, 1),
         band(i32::MIN, 1),
     ] {

@@ -507,11 +507,7 @@ fn rendered_scene_filtered_in_bands_with_halo_equals_the_full_frame() {
     };
     let mut frame = Vec::new();
     render(
-        Band {
-            width: w,
-            y0: 0,
-            rows: h,
-        },
+        Band::new(w, 0, h),
         &mut frame,
     );
     let (full, stats) = filter_frame(&frame, usize::from(w), usize::from(h));
@@ -528,11 +524,7 @@ fn rendered_scene_filtered_in_bands_with_halo_equals_the_full_frame() {
         for band in Bands::new(w, h, rows) {
             let mut input = Vec::new();
             render(
-                Band {
-                    width: w,
-                    y0: band.y0 - 1,
-                    rows: band.rows + 2,
-                },
+                Band::new(w, band.y0 - 1, band.rows + 2),
                 &mut input,
             );
             filter

@@ -122,11 +122,7 @@ fn render<const C: usize>(w: u16, h: u16, tris: &[ScreenTriangle<C>]) -> Vec<[i3
     let mut buf = BandBuffer::<C>::new(
         &mut acc,
         &mut cover,
-        Band {
-            width: w,
-            y0: 0,
-            rows: h,
-        },
+        Band::new(w, 0, h),
     )
     .unwrap();
     buf.clear([0; C]);

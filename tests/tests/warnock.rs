@@ -482,7 +482,7 @@ fn one_band(
     tris: &[DepthTriangle<1>],
     scratch: &mut [u16],
 ) -> (Result<WarnockStats, HsrError>, Vec<i32>) {
-    let band = Band { width: w, y0, rows };
+    let band = Band::new(w, y0, rows);
     let mut acc = vec![0i32; BandBuffer::<1>::acc_len(w, rows)];
     let mut cover = vec![0i32; BandBuffer::<1>::cover_len(w, rows)];
     let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();

@@ -1,44 +1,62 @@
-//! Band accumulation: `I_acc += I * S` over the primitives of one band of rows.
+//! The band: the caller-provided accumulator of one band of rows, the
+//! coverage scratch its shapes are walked into, and the sweeps that compose
+//! each shape into it (add, over, depth).
 //!
-//! Takes edge-pixel values and cover changes from the [`edge`](crate::edge)
-//! walker and the Gouraud plane of each primitive; gives linear 12-bit
-//! intensities per pixel at [`BandBuffer::lin12`] / [`BandBuffer::resolve_row`].
-//! Implements seed 000, eqs. 2-3: each pixel accumulates
-//! `I_acc(j) = I_acc(j-1) + I_j * S_j` over the polygons drawn into it, so
-//! polygons sharing an edge add up to exactly full coverage.
+//! Takes the cells and cover changes of a shape's edges from the
+//! [`edge`](crate::edge) walker, and the shape's paint (a flat colour or a
+//! Gouraud plane) and blend; gives linear 12-bit intensities per pixel at
+//! [`BandBuffer::lin12`] / [`BandBuffer::resolve_row`].
 //!
 //! ## The frame in bands
 //!
 //! A frame of `width x height` pixels is drawn as bands of `rows` rows
-//! ([`Bands`]); a band is a window `[y0, y0 + rows)` of frame rows. Every
-//! primitive is drawn into every band it touches; the walk of an edge is
-//! started directly at the band's first row from exact (quotient, remainder)
-//! state, so a pixel gets the very same bits whatever the band height.
-//! A band may lie partly or wholly outside the frame: its rows then simply
-//! receive whatever primitives cover them (nothing is written outside the
-//! caller's buffers).
+//! ([`Bands`]); a band is a window `[x0, x0 + width) x [y0, y0 + rows)` of
+//! the frame. Every shape is drawn into every band it touches; an edge's
+//! walk resumes where the band above left it, or starts directly at the
+//! band's first row from exact (quotient, remainder) state, so a pixel gets
+//! the very same bits whatever the band height. A band may lie partly or
+//! wholly outside the frame: its rows then simply receive whatever shapes
+//! cover them (nothing is written outside the caller's buffers).
 //!
-//! ## Units and why `i32`
+//! ## One shape at a time: scratch, then compose
 //!
-//! A pixel holds, per channel, `bg * 4096 + sum((I - bg) * S)` where `I` is
-//! linear 12-bit intensity, `S` coverage in 1/4096 of a pixel
-//! ([`COVER_ONE`](crate::COVER_ONE)) and `bg` the band's background. Drawing
-//! each primitive relative to the background makes the background show
-//! exactly through the uncovered fraction `1 - sum(S)` with no multiply at
-//! resolve. A full pixel is `4095 * 4096 < 2^24`; `i32` keeps the signed
-//! per-edge terms (an edge's contribution is an area on one side of it, the
-//! other side's edge takes it back) and room for 127 overlapping
-//! full-intensity primitives; beyond that, additions saturate instead of
-//! wrapping and the pixel resolves to the channel's limit (documented
-//! clipping). `u16` cannot hold the fraction bits that make the seam test
-//! exact: rounding happens once, in [`BandBuffer::lin12`].
+//! A shape (a triangle, a polygon, a mesh, a path, a stroke) is walked edge
+//! by edge into the `cover` scratch: per pixel the change of the winding
+//! integral, each edge pixel as a pair of changes (`+S` at the pixel, `-S`
+//! right of it) and each row's cover as one change. A running sum along the
+//! row gives every pixel its signed coverage, exact, with the shape's
+//! shared edges cancelled; the fill rule turns it into a share `c` in
+//! `0..=1` px, and the shape is composed once, as a whole:
 //!
-//! The second buffer, `cover`, is scratch for one primitive at a time: the
-//! edge walker writes the change of "cover" (coverage carried to the pixels
-//! right of an edge) into it and the span sweep reads it back and clears it.
+//! - **over** (painter's order): `acc = acc (1 - c α) + I c α`, in linear
+//!   light; one multiply per channel where the shape covers part of a
+//!   pixel, a store where it covers all of it opaquely;
+//! - **add** (seed 000, eqs. 2-3): `acc += (I - bg) c α`, a multiply per
+//!   channel on partly covered pixels and an addition elsewhere; for a flat
+//!   colour the product `(I - bg) c` is exact, so shapes sharing an edge sum
+//!   to the bits of the shape drawn whole;
+//! - **depth** (seed 004's z-buffer, `zsweep.rs`).
+//!
+//! Interior runs of one coverage are composed with the span set up once
+//! (the Gouraud plane's value at the run's first pixel, two multiplies)
+//! and stepped by one addition per pixel.
+//!
+//! ## Units and ranges
+//!
+//! Coverage is in [`COVER_ONE`](crate::COVER_ONE) = 2^16 per pixel. A pixel
+//! of the accumulator holds, per channel, `lin12 * 2^16` (a fully covered
+//! pixel of intensity 4095 is below `2^28`), so the frame is rounded to 12
+//! bits once, at resolve. Over keeps every pixel a convex combination of
+//! its inputs; add saturates instead of wrapping (a pixel beyond 8 full
+//! layers resolves to the channel's limit, documented clipping). The
+//! scratch sums wrap (two's complement, exact modulo `2^32`): the final
+//! sum of a pixel, a winding integral, is far inside `i32` for any shape
+//! with fewer than 32 767 nested windings.
 
-mod span;
+mod sweep;
 mod zsweep;
+
+pub(crate) use sweep::{ComposeOp, Paint};
 
 use crate::shade::LIN_MAX;
 use crate::COVER_BITS;
@@ -46,16 +64,41 @@ use crate::COVER_BITS;
 /// Largest band width and frame height handled, in pixels.
 pub const MAX_WIDTH: u16 = 2048;
 
-/// One band: the frame rows `[y0, y0 + rows)`, `width` pixels wide.
+/// One band: the frame rows `[y0, y0 + rows)`, columns `[x0, x0 + width)`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Band {
-    /// Width of the frame in pixels.
+    /// Width of the band in pixels.
     pub width: u16,
     /// First frame row of the band.
     pub y0: i32,
     /// Number of rows.
     pub rows: u16,
+    /// First frame column of the band (0 unless only part of the frame is
+    /// redrawn).
+    pub x0: i32,
+}
+
+impl Band {
+    /// A band of whole frame rows: columns `0..width`.
+    pub const fn new(width: u16, y0: i32, rows: u16) -> Self {
+        Self {
+            width,
+            y0,
+            rows,
+            x0: 0,
+        }
+    }
+
+    /// The frame rows it holds.
+    pub fn row_range(&self) -> core::ops::Range<i32> {
+        self.y0..self.y0.saturating_add(i32::from(self.rows))
+    }
+
+    /// The frame columns it holds.
+    pub fn column_range(&self) -> core::ops::Range<i32> {
+        self.x0..self.x0.saturating_add(i32::from(self.width))
+    }
 }
 
 /// The bands of a frame, top to bottom; the last one may be shorter.
@@ -67,20 +110,35 @@ pub struct Band {
 /// ```
 #[derive(Debug, Clone)]
 pub struct Bands {
+    x0: i32,
     width: u16,
-    height: u16,
+    next: i32,
+    end: i32,
     rows: u16,
-    next: u16,
 }
 
 impl Bands {
-    /// Bands of `rows` rows (at least 1) covering `height` rows.
+    /// Bands of `rows` rows (at least 1) covering `height` rows of a frame
+    /// `width` pixels wide.
     pub fn new(width: u16, height: u16, rows: u16) -> Self {
         Self {
+            x0: 0,
             width,
-            height,
-            rows: rows.max(1),
             next: 0,
+            end: i32::from(height),
+            rows: rows.max(1),
+        }
+    }
+
+    /// Bands of `rows` rows covering the window `x0..x0 + width`,
+    /// `y0..y0 + height` of a frame: what a partial redraw walks.
+    pub fn window(x0: i32, y0: i32, width: u16, height: u16, rows: u16) -> Self {
+        Self {
+            x0,
+            width,
+            next: y0,
+            end: y0.saturating_add(i32::from(height)),
+            rows: rows.max(1),
         }
     }
 }
@@ -88,16 +146,17 @@ impl Bands {
 impl Iterator for Bands {
     type Item = Band;
     fn next(&mut self) -> Option<Band> {
-        if self.next >= self.height {
+        if self.next >= self.end {
             return None;
         }
-        let rows = self.rows.min(self.height - self.next);
+        let rows = i32::from(self.rows).min(self.end - self.next) as u16;
         let band = Band {
             width: self.width,
-            y0: i32::from(self.next),
+            y0: self.next,
             rows,
+            x0: self.x0,
         };
-        self.next += rows;
+        self.next += i32::from(rows);
         Some(band)
     }
 }
@@ -105,9 +164,10 @@ impl Iterator for Bands {
 /// Why a band buffer could not be made.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
 pub enum BandError {
-    /// Width or rows is zero, the width is over [`MAX_WIDTH`], or `y0` is
-    /// outside the coordinate range.
+    /// Width or rows is zero, the width is over [`MAX_WIDTH`], or `y0` or
+    /// `x0` is outside the coordinate range.
     BadBand,
     /// `acc` is shorter than [`BandBuffer::acc_len`].
     AccTooSmall,
@@ -136,8 +196,8 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
     }
 
     /// `i32`s needed for the `cover` scratch: one per pixel, and two per
-    /// row for the extent of the row's cover changes (so the span sweep
-    /// visits only the columns between a primitive's edges).
+    /// row for the extent of the row's cover changes (so the sweep visits
+    /// only the columns between a shape's edges).
     pub const fn cover_len(width: u16, rows: u16) -> usize {
         (width as usize + 2) * rows as usize
     }
@@ -145,15 +205,15 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
     /// A buffer for `band` over `acc` and `cover` (longer slices are fine).
     /// Call [`clear`](Self::clear) before drawing.
     pub fn new(acc: &'a mut [i32], cover: &'a mut [i32], band: Band) -> Result<Self, BandError> {
-        let y_ok = band.y0.unsigned_abs() <= crate::geom::COORD_LIMIT_PX as u32;
+        let limit = crate::geom::COORD_LIMIT_PX as u32;
+        let y_ok = band.y0.unsigned_abs() <= limit && band.x0.unsigned_abs() <= limit;
         if band.width == 0 || band.rows == 0 || band.width > MAX_WIDTH || !y_ok || C == 0 {
             return Err(BandError::BadBand);
         }
         if acc.len() < Self::acc_len(band.width, band.rows) {
             return Err(BandError::AccTooSmall);
         }
-        let cover_len = Self::cover_len(band.width, band.rows);
-        if cover.len() < cover_len {
+        if cover.len() < Self::cover_len(band.width, band.rows) {
             return Err(BandError::CoverTooSmall);
         }
         let mut buf = Self {
@@ -179,8 +239,8 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
     }
 
     /// Fills the band with `background` (linear 12-bit; larger values are
-    /// clamped to 4095). Primitives drawn afterwards replace it in
-    /// proportion to their coverage.
+    /// clamped to 4095). Shapes drawn afterwards cover it in painter's
+    /// order, or add to it (`Blend::Add`, relative to this background).
     pub fn clear(&mut self, background: [u16; C]) {
         let bg = background.map(|v| v.min(LIN_MAX));
         self.background = bg;
@@ -188,10 +248,9 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         let Some(acc) = self.acc.get_mut(..n) else {
             return;
         };
+        let fill = bg.map(|b| i32::from(b) << COVER_BITS);
         for px in acc.chunks_exact_mut(C) {
-            for (a, b) in px.iter_mut().zip(bg) {
-                *a = i32::from(b) << COVER_BITS;
-            }
+            px.copy_from_slice(&fill);
         }
     }
 
@@ -212,11 +271,7 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
     /// `width` pixels; a shorter `out` gets the row's first pixels).
     /// Returns the number of pixels written, 0 when `y` is not in the band.
     pub fn resolve_row(&self, y: i32, out: &mut [[u16; C]]) -> usize {
-        let Some(start) = self.index(0, y) else {
-            return 0;
-        };
-        let w = usize::from(self.band.width);
-        let Some(row) = self.acc.get(start..start + w * C) else {
+        let Some(row) = self.acc_row(y) else {
             return 0;
         };
         let mut n = 0;
@@ -229,8 +284,20 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         n
     }
 
+    /// The accumulator of frame row `y` (`width * C` values, `lin12 *
+    /// 2^16` each), or `None` when `y` is not in the band.
+    pub(crate) fn acc_row(&self, y: i32) -> Option<&[i32]> {
+        let r = usize::try_from(y.checked_sub(self.band.y0)?).ok()?;
+        if r >= usize::from(self.band.rows) {
+            return None;
+        }
+        let w = usize::from(self.band.width) * C;
+        self.acc.get(r * w..r * w + w)
+    }
+
     /// The raw accumulation of frame pixel `(x, y)`: per channel,
-    /// `lin12 * 4096` before rounding (for tests and tools).
+    /// `lin12 * 2^16` before rounding.
+    #[cfg(any(test, feature = "internals"))]
     pub fn raw(&self, x: i32, y: i32) -> Option<[i32; C]> {
         let k = self.index(x, y)?;
         let px = self.acc.get(k..k + C)?;
@@ -242,14 +309,15 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
     /// Index of channel 0 of `(x, y)` in `acc`.
     fn index(&self, x: i32, y: i32) -> Option<usize> {
         let w = i32::from(self.band.width);
+        let c = x.checked_sub(self.band.x0)?;
         let r = y.checked_sub(self.band.y0)?;
-        if x < 0 || x >= w || r < 0 || r >= i32::from(self.band.rows) {
+        if c < 0 || c >= w || r < 0 || r >= i32::from(self.band.rows) {
             return None;
         }
-        Some((r as usize * w as usize + x as usize) * C)
+        Some((r as usize * w as usize + c as usize) * C)
     }
 
-    /// Adds an edge pixel's values (acc units, one per channel) to `(x, y)`;
+    /// Adds values (acc units, one per channel) to frame pixel `(x, y)`;
     /// pixels outside the band are dropped.
     #[inline]
     pub(crate) fn add_cell(&mut self, x: i32, y: i32, values: &[i32; C]) {
@@ -262,24 +330,42 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         }
     }
 
-    /// Records a change of cover `delta` (coverage units) starting at
-    /// column `x` of row `y`. Columns left of the band go to column 0 (they
-    /// cover everything to their right); columns right of it are dropped.
+    /// Records a change of cover `delta` (coverage units) starting at frame
+    /// column `x` of frame row `y`. Columns left of the band go to its
+    /// first column (they cover everything to their right); columns right
+    /// of it are dropped.
     #[inline]
     pub(crate) fn add_cover(&mut self, x: i32, y: i32, delta: i32) {
         let w = i32::from(self.band.width);
-        let r = y - self.band.y0;
-        if r < 0 || r >= i32::from(self.band.rows) || x >= w {
+        let r = y.wrapping_sub(self.band.y0);
+        let c = x.saturating_sub(self.band.x0);
+        if r < 0 || r >= i32::from(self.band.rows) || c >= w {
             return;
         }
-        let x = x.max(0);
-        let start = r as usize * (w as usize + 2);
-        if let Some(row) = self.cover.get_mut(start..start + w as usize + 2) {
-            row[x as usize] += delta;
-            let (lo, hi) = (w as usize, w as usize + 1);
-            row[lo] = row[lo].min(x);
-            row[hi] = row[hi].max(x);
+        let c = c.max(0) as usize;
+        let w = w as usize;
+        let start = r as usize * (w + 2);
+        if let Some(row) = self.cover.get_mut(start..start + w + 2) {
+            if let [deltas @ .., lo, hi] = row {
+                if let Some(d) = deltas.get_mut(c) {
+                    *d = d.wrapping_add(delta);
+                }
+                *lo = (*lo).min(c as i32);
+                *hi = (*hi).max(c as i32);
+            }
         }
+    }
+
+    /// Records an edge pixel's area as a pair of cover changes: `+area` at
+    /// the pixel, `-area` right of it.
+    #[inline]
+    pub(crate) fn add_area(&mut self, x: i32, y: i32, area: i32) {
+        let c = x.saturating_sub(self.band.x0);
+        if c < 0 || c >= i32::from(self.band.width) {
+            return;
+        }
+        self.add_cover(x, y, area);
+        self.add_cover(x.saturating_add(1), y, area.wrapping_neg());
     }
 
     /// Empties row `r` of the cover scratch's extent (the deltas are
@@ -288,33 +374,56 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         let w = usize::from(self.band.width);
         let start = r * (w + 2);
         if let Some(row) = self.cover.get_mut(start..start + w + 2) {
-            row[..w].iter_mut().for_each(|c| *c = 0);
-            row[w] = i32::MAX;
-            row[w + 1] = i32::MIN;
+            if let [deltas @ .., lo, hi] = row {
+                deltas.iter_mut().for_each(|c| *c = 0);
+                *lo = i32::MAX;
+                *hi = i32::MIN;
+            }
         }
+    }
+
+    /// Empties the whole scratch (a walk that was not swept).
+    pub(crate) fn reset_scratch(&mut self) {
+        for r in 0..self.band.rows {
+            self.reset_row(usize::from(r));
+        }
+    }
+
+    /// The frame rows `y_lo..y_hi` clipped to the band (for the sweeps).
+    fn rows_in_band(&self, y_lo: i32, y_hi: i32) -> core::ops::Range<i32> {
+        let end = self.band.y0 + i32::from(self.band.rows);
+        y_lo.max(self.band.y0)..y_hi.min(end)
     }
 }
 
-impl<const C: usize> BandBuffer<'_, C> {
-    /// The frame rows `y_lo..y_hi` clipped to the band (for the sweeps).
-    fn rows_in_band(&self, y_lo: i32, y_hi: i32) -> core::ops::Range<i32> {
-        y_lo.max(self.band.y0)..y_hi.min(self.band.y0 + i32::from(self.band.rows))
+/// The walker's reports go straight into the scratch.
+impl<const C: usize> crate::edge::CoverSink for BandBuffer<'_, C> {
+    #[inline]
+    fn cell(&mut self, x: i32, y: i32, area: i32) {
+        self.add_area(x, y, area);
+    }
+    #[inline]
+    fn cover(&mut self, x: i32, y: i32, delta: i32) {
+        self.add_cover(x, y, delta);
     }
 }
 
 /// Row `r` of the cover scratch for a sweep: its cover changes and their
-/// column extent `lo..=hi`, the extent reset for the next primitive (the
-/// sweep clears the changes as it reads them). `None` when the row has no
+/// column extent `lo..=hi`, the extent reset for the next shape (the sweep
+/// clears the changes as it reads them). `None` when the row has no
 /// changes. Events were clamped into the band at insertion, so
 /// `0 <= lo <= hi < w`.
 fn take_row(cover: &mut [i32], r: usize, w: usize) -> Option<(&mut [i32], usize, usize)> {
     let start = r * (w + 2);
     let row = cover.get_mut(start..start + w + 2)?;
     let (deltas, ext) = row.split_at_mut(w);
-    let (lo, hi) = (
-        core::mem::replace(&mut ext[0], i32::MAX),
-        core::mem::replace(&mut ext[1], i32::MIN),
-    );
+    let (lo, hi) = match ext {
+        [lo, hi] => (
+            core::mem::replace(lo, i32::MAX),
+            core::mem::replace(hi, i32::MIN),
+        ),
+        _ => return None,
+    };
     if lo > hi {
         return None;
     }
@@ -322,7 +431,8 @@ fn take_row(cover: &mut [i32], r: usize, w: usize) -> Option<(&mut [i32], usize,
     Some((deltas, lo, hi))
 }
 
-/// Rounds an accumulated value to linear 12 bits: the pipeline's one rounding.
+/// Rounds an accumulated value to linear 12 bits: the pipeline's one
+/// rounding.
 #[inline]
 fn resolve(acc: i32) -> u16 {
     let v = ((acc >> (COVER_BITS - 1)) + 1) >> 1;
@@ -333,12 +443,14 @@ fn resolve(acc: i32) -> u16 {
 mod tests {
     use super::*;
 
+    const ONE: i32 = crate::COVER_ONE;
+
     #[test]
     fn rounding_is_to_nearest_and_clamped() {
         assert_eq!(resolve(0), 0);
-        assert_eq!(resolve(2047), 0);
-        assert_eq!(resolve(2048), 1);
-        assert_eq!(resolve(4095 * 4096), 4095);
+        assert_eq!(resolve(ONE / 2 - 1), 0);
+        assert_eq!(resolve(ONE / 2), 1);
+        assert_eq!(resolve(4095 * ONE), 4095);
         assert_eq!(resolve(i32::MAX), 4095);
         assert_eq!(resolve(-5000), 0);
     }
@@ -347,50 +459,27 @@ mod tests {
     fn short_buffers_and_bad_bands_are_errors() {
         let mut acc = [0i32; 8];
         let mut cov = [0i32; 12];
-        let band = Band {
-            width: 4,
-            y0: 0,
-            rows: 2,
-        };
+        let band = Band::new(4, 0, 2);
         assert!(BandBuffer::<1>::new(&mut acc, &mut cov, band).is_ok());
         assert_eq!(
             BandBuffer::<3>::new(&mut acc, &mut cov, band).err(),
             Some(BandError::AccTooSmall)
         );
-        let zero = Band {
-            width: 0,
-            y0: 0,
-            rows: 2,
-        };
         assert_eq!(
-            BandBuffer::<1>::new(&mut acc, &mut cov, zero).err(),
+            BandBuffer::<1>::new(&mut acc, &mut cov, Band::new(0, 0, 2)).err(),
             Some(BandError::BadBand)
         );
-        let far = Band {
-            width: 4,
-            y0: i32::MIN,
-            rows: 2,
-        };
         assert_eq!(
-            BandBuffer::<1>::new(&mut acc, &mut cov, far).err(),
+            BandBuffer::<1>::new(&mut acc, &mut cov, Band::new(4, i32::MIN, 2)).err(),
             Some(BandError::BadBand)
         );
     }
 
     #[test]
-    fn out_of_band_reads_are_none() {
+    fn out_of_band_reads_and_writes_are_dropped() {
         let mut acc = [0i32; 8];
         let mut cov = [0i32; 12];
-        let mut b = BandBuffer::<1>::new(
-            &mut acc,
-            &mut cov,
-            Band {
-                width: 4,
-                y0: 10,
-                rows: 2,
-            },
-        )
-        .unwrap();
+        let mut b = BandBuffer::<1>::new(&mut acc, &mut cov, Band::new(4, 10, 2)).unwrap();
         b.clear([100]);
         assert_eq!(b.lin12(0, 10), Some([100]));
         assert_eq!(b.lin12(0, 9), None);
@@ -399,6 +488,25 @@ mod tests {
         b.add_cell(-1, 10, &[5]);
         b.add_cover(99, 10, 5);
         b.add_cover(0, 12, 5);
-        assert_eq!(b.raw(0, 10), Some([100 << 12]));
+        assert_eq!(b.lin12(0, 10), Some([100]));
+        assert!(take_row(b.cover, 0, 4).is_none());
+    }
+
+    #[test]
+    fn windowed_band_addresses_frame_columns() {
+        let mut acc = [0i32; 4];
+        let mut cov = [0i32; 6];
+        let band = Band {
+            width: 4,
+            y0: 3,
+            rows: 1,
+            x0: 100,
+        };
+        let mut b = BandBuffer::<1>::new(&mut acc, &mut cov, band).unwrap();
+        b.clear([7]);
+        assert_eq!(b.lin12(100, 3), Some([7]));
+        assert_eq!(b.lin12(99, 3), None);
+        assert_eq!(b.lin12(103, 3), Some([7]));
+        assert_eq!(b.lin12(104, 3), None);
     }
 }

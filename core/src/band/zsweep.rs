@@ -10,7 +10,7 @@
 //! multiply per channel where `s` is not a whole pixel (a shift where it is).
 
 use super::BandBuffer;
-use crate::hsr::{DepthBuffer, DepthPlane, ZPass, FULL};
+use crate::hsr::{DepthBuffer, DepthPlane, ZPass, FULL, FULL_BITS};
 use crate::shade::{Plane, PLANE_FRAC};
 use crate::COVER_BITS;
 
@@ -57,7 +57,8 @@ impl<const C: usize> BandBuffer<'_, C> {
                 } else if c == 0 {
                     break;
                 }
-                let s_px = c.clamp(0, full);
+                // The winding integral's size, in the depth buffer's 1/4096 px.
+                let s_px = ((c.unsigned_abs() >> (COVER_BITS - FULL_BITS)) as i32).min(full);
                 if s_px > 0 {
                     let z = zplane.depth(zf);
                     if let (Some(px), Some(zd), Some(k)) = (
@@ -94,7 +95,7 @@ impl<const C: usize> BandBuffer<'_, C> {
                                 let s = s_px.min(full - i32::from(*k));
                                 if s > 0 {
                                     for ch in 0..C {
-                                        let add = (v[ch] * i64::from(s)) >> PLANE_FRAC;
+                                        let add = (v[ch] * i64::from(s)) >> FULL_BITS;
                                         px[ch] = px[ch].saturating_add(add as i32);
                                     }
                                     *k += s as u16;

@@ -1,12 +1,12 @@
-//! Setup: the canonical (first-octant) frame of an edge, by the rule of
+//! Set-up: the canonical (first-octant) frame of an edge, by the rule of
 //! duality of seed 001. No per-pixel work here.
 
 use crate::arith::{div_floor, limit};
-use crate::geom::SubPoint;
-use crate::SUB_ONE;
+use crate::geom::{FinePoint, FINE_ONE};
 
 /// An edge in its canonical frame: `u` the major axis, `v` the minor axis,
-/// `u0 < u1`, `v0 <= v1`, `dv <= du`, all in sub-pixels.
+/// `u0 < u1`, `v0 <= v1`, `dv <= du`, all in fine units (1/1024 px). With
+/// fine coordinates within `±2^21`, extents are at most `2^22`.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Canon {
     /// `u` is `y` (the edge is steeper than 45°).
@@ -23,10 +23,13 @@ pub(crate) struct Canon {
     pub dir: i32,
 }
 
+/// One pixel in fine units, as `i64`.
+pub(crate) const N: i64 = FINE_ONE as i64;
+
 impl Canon {
     /// The canonical frame of the edge `p0 -> p1`; `None` for a horizontal
     /// edge (it cuts off no area in the row-wise model).
-    pub fn new(p0: SubPoint, p1: SubPoint) -> Option<Self> {
+    pub fn new(p0: FinePoint, p1: FinePoint) -> Option<Self> {
         let (a, b, dir) = match p0.y.cmp(&p1.y) {
             core::cmp::Ordering::Less => (p0, p1, 1),
             core::cmp::Ordering::Greater => (p1, p0, -1),
@@ -68,7 +71,7 @@ impl Canon {
     /// Frame column where cover starts, for a canonical boundary `beta`.
     pub fn cover_column(&self, beta: i32) -> i32 {
         if self.mirrored {
-            -beta
+            beta.saturating_neg()
         } else {
             beta
         }
@@ -84,37 +87,14 @@ impl Canon {
         }
     }
 
-    /// Plane gradients along the canonical axes: per column of `u`, per row
-    /// of `v`.
-    pub fn gradients(&self, gx: i32, gy: i32) -> (i32, i32) {
-        let gx = if self.mirrored {
-            gx.saturating_neg()
-        } else {
-            gx
-        };
-        if self.transposed {
-            (gy, gx)
-        } else {
-            (gx, gy)
-        }
-    }
-
     /// First and last major columns the edge touches.
     pub fn columns(&self) -> (i64, i64) {
-        let one = i64::from(SUB_ONE);
-        (
-            div_floor(self.u0, one),
-            div_floor(self.u1 + one - 1, one) - 1,
-        )
+        (div_floor(self.u0, N), div_floor(self.u1 + N - 1, N) - 1)
     }
 
     /// First and last minor rows the edge touches.
     pub fn rows(&self) -> (i64, i64) {
-        let one = i64::from(SUB_ONE);
-        (
-            div_floor(self.v0, one),
-            div_floor(self.v1 + one - 1, one) - 1,
-        )
+        (div_floor(self.v0, N), div_floor(self.v1 + N - 1, N) - 1)
     }
 
     /// `v * du` at `u`, with `u` clamped into the edge (the line extended
@@ -122,5 +102,10 @@ impl Canon {
     pub fn v_num_clamped(&self, u: i64) -> i64 {
         let u = limit(u, self.u0, self.u1);
         self.v0 * self.du + (u - self.u0) * self.dv
+    }
+
+    /// The minor cell holding the (clamped) line at major position `u`.
+    pub fn cell_at(&self, u: i64) -> i64 {
+        div_floor(self.v_num_clamped(u), N * self.du)
     }
 }

@@ -1,516 +1,568 @@
-//! The anti-aliased walk: setup of the step constants (may divide), then the
-//! per-column stepping (add / compare only, plus the exact-mode spill).
+//! The anti-aliased walk: set-up of the step constants (may divide), then
+//! the per-column stepping (add / compare only, the exact mode's spill
+//! included), resumable from one band to the next.
 
 use core::ops::Range;
 
 use super::area::clamped_area;
-use super::canon::Canon;
-use super::{AreaMode, EdgeSink, Plane};
-use crate::arith::{div_ceil, div_floor, limit, rem_floor};
-use crate::shade::PLANE_FRAC;
-use crate::{COVER_BITS, COVER_ONE, SUB_BITS, SUB_ONE};
+use super::canon::{Canon, N};
+use super::crossing::{Crossing, Crossings};
+use super::{AreaMode, CoverSink};
+use crate::arith::{div_floor, limit, rem_floor};
+use crate::geom::FinePoint;
+use crate::COVER_ONE;
 
-/// One pixel of `v` over a full column, in coverage units: `4096 / 16`.
-const COVER_PER_SUB: i64 = (COVER_ONE / SUB_ONE) as i64;
-const ONE: i64 = COVER_ONE as i64;
-const SUB: i64 = SUB_ONE as i64;
+/// A whole pixel of coverage.
+const ONE: i32 = COVER_ONE;
+/// Coverage units per fine unit of height across a whole column.
+const H: i64 = COVER_ONE as i64 / N;
 
-/// Walks the edge `p0 -> p1` and reports its pixels in `rows` to `sink`.
-///
-/// `orientation` is `+1` when the polygon's inside lies right of its edges
-/// running down the screen, `-1` otherwise (see
-/// [`raster`](crate::raster)); horizontal edges report nothing.
-///
-/// ```
-/// use softedge::edge::{walk_edge, AreaMode, EdgeSink, Plane};
-/// use softedge::SubPoint;
-///
-/// struct Sum(i64);
-/// impl EdgeSink<1> for Sum {
-///     fn cell(&mut self, _x: i32, _y: i32, cov: i32, _v: &[i32; 1]) { self.0 += i64::from(cov); }
-///     fn cover(&mut self, x: i32, _y: i32, d: i32) { self.0 += i64::from(d) * i64::from(10 - x); }
-/// }
-/// // A vertical edge at x = 4.5 px from y = 0 to y = 2: right of it, inside
-/// // columns 0..10, lie 5.5 px per row: 11 px² in all.
-/// let mut sum = Sum(0);
-/// let e = (SubPoint::new(72, 0), SubPoint::new(72, 32));
-/// walk_edge(e.0, e.1, 1, &Plane::flat([4095], [0]), AreaMode::Exact, 0..2, &mut sum);
-/// assert_eq!(sum.0, 11 * 4096);
-/// ```
-#[inline(never)] // a frame's edges: kept out of line so profiles can name it
-pub fn walk_edge<const C: usize, K: EdgeSink<C>>(
-    p0: crate::SubPoint,
-    p1: crate::SubPoint,
-    orientation: i32,
-    plane: &Plane<C>,
-    mode: AreaMode,
-    rows: Range<i32>,
-    sink: &mut K,
-) {
-    // Rows the edge can touch; nothing to set up for an edge outside them.
-    let (top, bottom) = (p0.y.min(p1.y) >> SUB_BITS, p0.y.max(p1.y) >> SUB_BITS);
-    if bottom < rows.start || top >= rows.end {
-        return;
-    }
-    let Some(e) = Canon::new(p0, p1) else {
-        return;
-    };
-    let w = orientation.signum() * e.dir;
-    if w == 0 || rows.start >= rows.end {
-        return;
-    }
-    let mut walker = Walker::new(e, w, plane, mode, rows, sink);
-    if e.transposed {
-        walker.y_major();
-    } else {
-        walker.x_major();
-    }
+/// The main term at one interior column: exact integers, so equal to a
+/// direct evaluation there.
+#[derive(Debug, Clone, Copy)]
+struct Step {
+    /// Major column.
+    a: i32,
+    /// Chosen minor cell: the one holding the line at the column centre.
+    b: i32,
+    /// Main term `S = v(u_c) - b` in coverage units (floor) and its
+    /// remainder over `du`.
+    s: i32,
+    r: i32,
+    /// `S` at which the walk leaves the cell: a whole pixel, or less in the
+    /// first row of an x-major edge (measured from the vertex, not the row
+    /// top).
+    h: i32,
 }
 
-/// Per-edge constants and the sink.
-struct Walker<'a, const C: usize, K> {
+/// Where a walk stopped, so that the next band's walk resumes there
+/// instead of starting over with divisions.
+#[derive(Debug, Clone, Copy)]
+struct Resume {
+    /// The first row of the band this state starts.
+    row: i32,
+    /// The next major column (x-major) or frame row (y-major) to walk.
+    a: i32,
+    /// Rows above `prev` have had their cover reported (x-major).
+    prev: i32,
+    /// The main term at `a - 1`, when that was an interior column.
+    st: Option<Step>,
+    /// The next crossing at or after `a` (exact mode).
+    x: Option<Crossing>,
+}
+
+/// One edge of a shape, set up once and walked band by band.
+///
+/// Built from two fine points ([`FinePoint`]); horizontal edges are `None`
+/// (they cut off no area in the row-wise model). [`walk`](Self::walk)
+/// reports, through a [`CoverSink`], every pixel of the given rows the edge
+/// cuts (its signed area right of the edge, inside the edge's own y-range)
+/// and, per row, the column from which the edge's full height applies.
+/// Walking the bands of a frame top to bottom resumes where the previous
+/// band stopped; any other order starts over from a direct evaluation. Both
+/// give the same bits.
+///
+/// The signs: an edge that runs down the screen reports `+` the area right
+/// of it, one that runs up `-`; so the sum over the edges of closed
+/// contours is, in every pixel, the integral of the winding number.
+#[derive(Debug, Clone)]
+pub struct EdgeWalk {
     e: Canon,
-    /// Sign of the cell values: winding times the side of the canonical area.
-    sw: i64,
-    /// Winding of the cover.
-    w: i64,
-    plane: &'a Plane<C>,
-    exact: bool,
-    ylo: i64,
-    yhi: i64,
-    sink: &'a mut K,
-    /// Main term step `4096 * dv / du` as quotient and remainder.
-    q: i64,
-    rr: i64,
-    /// Half a column of `v`, `2048 * dv / du`, as quotient and remainder.
-    kq: i64,
-    kr: i64,
-    /// `2^19 * du / dv`: turns `e^2` into the spill `e^2 / (2k)` (`>> 32`).
-    inv: u64,
-    gu: [i64; C],
-    gv: [i64; C],
-    gq: [i64; C],
-    gvq: [i64; C],
-    b0: i64,
-    b1: i64,
+    /// Sign of the cell areas: the winding times the side of the canonical
+    /// area.
+    sw: i32,
+    /// Sign of the covers: the winding.
+    w: i32,
+    /// First and last major columns, first and last minor rows.
+    a0: i32,
+    a1: i32,
+    b0: i32,
+    b1: i32,
+    /// Main term step per column `ONE dv / du`, quotient and remainder.
+    du: i32,
+    q: i32,
+    rr: i32,
+    cross: Option<Crossings>,
+    /// x-major only: the visible major columns `va..=vb` (empty when
+    /// `va > vb`), the frame column covers left of them go to, and the
+    /// rows whose cover columns lie left of the frame: `b0..r_in` (not
+    /// mirrored) or `r_out..=b1` (mirrored).
+    va: i32,
+    vb: i32,
+    c_lo: i32,
+    c_hi: i32,
+    r_in: i32,
+    r_out: i32,
+    resume: Option<Resume>,
 }
 
-/// The walker's state at one column: exact integers, so equal to what a
-/// direct evaluation at that column gives.
-struct Step<const C: usize> {
-    a: i64,
-    /// Chosen minor cell.
-    b: i64,
-    /// Main term `S` (floor, 1/4096 px) and its remainder over `du`.
-    s: i64,
-    r: i64,
-    /// `S` at which the walk leaves the cell (4096, or less in an x-major
-    /// edge's first row).
-    h: i64,
-    /// Plane at the chosen pixel, `P = I * S`, `A = I * q`, `B = g_u * S`,
-    /// `G = g_v * S`.
-    i: [i64; C],
-    p: [i64; C],
-    pa: [i64; C],
-    pb: [i64; C],
-    pg: [i64; C],
-}
-
-impl<'a, const C: usize, K: EdgeSink<C>> Walker<'a, C, K> {
-    // ---- setup (per edge) ------------------------------------------------
-
-    fn new(
-        e: Canon,
-        w: i32,
-        plane: &'a Plane<C>,
-        mode: AreaMode,
-        rows: Range<i32>,
-        sink: &'a mut K,
-    ) -> Self {
-        let du = e.du;
-        let q = div_floor(ONE * e.dv, du);
-        let rr = rem_floor(ONE * e.dv, du);
-        let kq = div_floor(ONE / 2 * e.dv, du);
-        let kr = rem_floor(ONE / 2 * e.dv, du);
-        let inv = if e.dv > 0 {
-            ((du as u64) << 19).checked_div(e.dv as u64).unwrap_or(0)
-        } else {
-            0
-        };
-        let mut gu = [0i64; C];
-        let mut gv = [0i64; C];
-        let mut gq = [0i64; C];
-        let mut gvq = [0i64; C];
-        for ch in 0..C {
-            let (u, v) = e.gradients(plane.gx[ch], plane.gy[ch]);
-            gu[ch] = i64::from(u);
-            gv[ch] = i64::from(v);
-            gq[ch] = gu[ch] * q;
-            gvq[ch] = gv[ch] * q;
-        }
+impl EdgeWalk {
+    /// Sets up the edge `p0 -> p1` for a sink keeping the frame columns
+    /// `columns` (divides: once per edge and frame). `None` for a
+    /// horizontal edge. Points must be within the fine coordinate range
+    /// (`FinePoint::in_range`); the caller checks.
+    pub fn new(p0: FinePoint, p1: FinePoint, mode: AreaMode, columns: Range<i32>) -> Option<Self> {
+        let e = Canon::new(p0, p1)?;
+        let (a0, a1) = e.columns();
         let (b0, b1) = e.rows();
-        Self {
+        let one = i64::from(ONE);
+        let exact = mode == AreaMode::Exact;
+        let mut walk = Self {
             e,
-            sw: i64::from(e.sign() * w),
-            w: i64::from(w),
-            plane,
-            exact: mode == AreaMode::Exact,
-            ylo: i64::from(rows.start),
-            yhi: i64::from(rows.end),
-            sink,
-            q,
-            rr,
-            kq,
-            kr,
-            inv,
-            gu,
-            gv,
-            gq,
-            gvq,
-            b0,
-            b1,
+            sw: e.sign() * e.dir,
+            w: e.dir,
+            a0: a0 as i32,
+            a1: a1 as i32,
+            b0: b0 as i32,
+            b1: b1 as i32,
+            du: e.du as i32,
+            q: div_floor(one * e.dv, e.du) as i32,
+            rr: rem_floor(one * e.dv, e.du) as i32,
+            cross: if exact {
+                Crossings::new(e.u0, e.v0, e.du, e.dv)
+            } else {
+                None
+            },
+            va: 0,
+            vb: -1,
+            c_lo: columns.start,
+            c_hi: columns.end,
+            r_in: b0 as i32,
+            r_out: b1 as i32 + 1,
+            resume: None,
+        };
+        if !e.transposed {
+            walk.clip_columns(columns);
+        }
+        Some(walk)
+    }
+
+    /// The frame rows the edge touches.
+    pub fn rows(&self) -> Range<i32> {
+        if self.e.transposed {
+            self.a0..self.a1 + 1
+        } else {
+            self.b0..self.b1 + 1
         }
     }
 
-    /// Chosen minor cell of column `a`: the cell holding the (clamped) line
-    /// at the column centre.
-    fn centre_cell(&self, a: i64) -> i64 {
-        let b = div_floor(self.e.v_num_clamped(a * SUB + SUB / 2), SUB * self.e.du);
+    /// Reports the edge's pixels in frame rows `rows` to `sink`.
+    pub fn walk<K: CoverSink>(&mut self, rows: Range<i32>, sink: &mut K) {
+        if rows.start >= rows.end {
+            return;
+        }
         if self.e.transposed {
-            b
+            self.y_major(rows, sink);
         } else {
-            limit(b, self.b0, self.b1)
+            self.x_major(rows, sink);
+        }
+    }
+
+    // ---- set-up ------------------------------------------------------------
+
+    /// x-major: which major columns are visible, and the rows whose covers
+    /// fall left of the frame (set-up, a few divisions).
+    fn clip_columns(&mut self, cols: Range<i32>) {
+        let (c_lo, c_hi) = (cols.start, cols.end);
+        // Visible canonical columns: frame x in [c_lo, c_hi).
+        let (vis_lo, vis_hi) = if self.e.mirrored {
+            (c_hi.saturating_neg(), (-1i32).saturating_sub(c_lo))
+        } else {
+            (c_lo, c_hi.saturating_sub(1))
+        };
+        self.va = self.a0.max(vis_lo);
+        self.vb = self.a1.min(vis_hi);
+        // The side where columns are left of the frame: low canonical
+        // columns unmirrored, high ones mirrored.
+        let (b0, b1) = (self.b0, self.b1);
+        if self.va > self.vb {
+            let wholly_left = if self.e.mirrored {
+                self.a0 > vis_hi
+            } else {
+                self.a1 < vis_lo
+            };
+            // Wholly left: every row's cover at c_lo; wholly right: none.
+            (self.r_in, self.r_out) = match (wholly_left, self.e.mirrored) {
+                (true, false) => (b1 + 1, b1 + 1),
+                (true, true) => (b0, b0),
+                (false, _) => (b0, b1 + 1),
+            };
+            return;
+        }
+        if !self.e.mirrored && self.va > self.a0 {
+            self.r_in = self.centre_cell(self.va);
+        }
+        if self.e.mirrored && self.vb < self.a1 {
+            self.r_out = self.centre_cell(self.vb);
+        }
+    }
+
+    /// The chosen minor cell of column `a`: the one holding the (clamped)
+    /// line at the column centre.
+    fn centre_cell(&self, a: i32) -> i32 {
+        let b = self.e.cell_at(i64::from(a) * N + N / 2);
+        if self.e.transposed {
+            b as i32
+        } else {
+            limit(b, i64::from(self.b0), i64::from(self.b1)) as i32
         }
     }
 
     /// Height of row `b` inside an x-major edge, in coverage units.
-    fn row_cover(&self, b: i64) -> i64 {
-        COVER_PER_SUB * ((b * SUB + SUB).min(self.e.v1) - (b * SUB).max(self.e.v0))
+    fn row_cover(&self, b: i32) -> i32 {
+        let b = i64::from(b);
+        (H * ((b * N + N).min(self.e.v1) - (b * N).max(self.e.v0))) as i32
     }
 
-    /// Height of major column `a` inside a y-major edge, in coverage units.
-    fn column_cover(&self, a: i64) -> i64 {
-        COVER_PER_SUB * ((a * SUB + SUB).min(self.e.u1) - (a * SUB).max(self.e.u0))
+    /// Height of major row `a` inside a y-major edge, in coverage units.
+    fn column_cover(&self, a: i32) -> i32 {
+        let a = i64::from(a);
+        (H * ((a * N + N).min(self.e.u1) - (a * N).max(self.e.u0))) as i32
     }
 
-    /// Direct evaluation of the state at interior column `a` (divides).
-    fn init(&self, a: i64) -> Step<C> {
+    /// Direct evaluation of the main term at interior column `a` (divides).
+    fn init(&self, a: i32) -> Step {
         let e = &self.e;
-        let vn = e.v0 * e.du + (a * SUB + SUB / 2 - e.u0) * e.dv;
-        let b = div_floor(vn, SUB * e.du);
-        let (v_ref, h) = if !e.transposed && b == self.b0 {
-            (e.v0, COVER_PER_SUB * ((b + 1) * SUB - e.v0))
+        let vn = e.v0 * e.du + (i64::from(a) * N + N / 2 - e.u0) * e.dv;
+        let b = div_floor(vn, N * e.du);
+        let (v_ref, h) = if !e.transposed && b == i64::from(self.b0) {
+            (e.v0, H * ((b + 1) * N - e.v0))
         } else {
-            (b * SUB, ONE)
+            (b * N, i64::from(ONE))
         };
-        let n = COVER_PER_SUB * (vn - v_ref * e.du);
-        let (s, r) = (div_floor(n, e.du), rem_floor(n, e.du));
-        let i = self.plane_at(a, b);
-        let mut st = Step {
+        let n = H * (vn - v_ref * e.du);
+        Step {
             a,
-            b,
-            s,
-            r,
-            h,
-            i,
-            p: [0; C],
-            pa: [0; C],
-            pb: [0; C],
-            pg: [0; C],
-        };
-        for ch in 0..C {
-            st.p[ch] = i[ch] * s;
-            st.pa[ch] = i[ch] * self.q;
-            st.pb[ch] = self.gu[ch] * s;
-            st.pg[ch] = self.gv[ch] * s;
+            b: b as i32,
+            s: div_floor(n, e.du) as i32,
+            r: rem_floor(n, e.du) as i32,
+            h: h as i32,
         }
-        st
     }
 
-    fn plane_at(&self, a: i64, b: i64) -> [i64; C] {
-        let (x, y) = self.e.pixel(a as i32, b as i32);
-        self.plane.at(x, y)
+    /// The first crossing at or after boundary `m` whose column is past
+    /// `after` (set-up: divides).
+    fn crossing_from(&self, m: i32, after: i32) -> Option<Crossing> {
+        let k = self.cross.as_ref()?;
+        let mut x = k.at(m);
+        while x.col <= after && x.m <= self.last_boundary() {
+            x.advance(k);
+        }
+        Some(x)
     }
 
-    // ---- stepping (per pixel: add / compare) -----------------------------
+    /// The last minor boundary strictly inside the edge.
+    fn last_boundary(&self) -> i32 {
+        div_floor(self.e.v1 - 1, N) as i32
+    }
+
+    // ---- stepping (per column: add / compare) ------------------------------
 
     /// One column along the major axis; a diagonal step when the main term
     /// reaches the cell height (seed 001: horizontal vs diagonal by the
     /// sign of the evaluation function).
     #[inline]
-    fn step(&self, st: &mut Step<C>) {
+    fn step(&self, st: &mut Step) {
         st.r += self.rr;
-        let carry = st.r >= self.e.du;
-        if carry {
-            st.r -= self.e.du;
+        if st.r >= self.du {
+            st.r -= self.du;
+            st.s += 1;
         }
-        st.s += self.q + i64::from(carry);
-        for ch in 0..C {
-            st.pb[ch] += self.gq[ch] + if carry { self.gu[ch] } else { 0 };
-            st.p[ch] += st.pa[ch] + if carry { st.i[ch] } else { 0 } + st.pb[ch];
-            st.pa[ch] += self.gq[ch];
-            st.pg[ch] += self.gvq[ch] + if carry { self.gv[ch] } else { 0 };
-            st.i[ch] += self.gu[ch];
-        }
+        st.s += self.q;
         st.a += 1;
         if st.s >= st.h {
-            if st.h != ONE {
-                // Leaving the first row of an x-major edge, whose top is the
-                // vertex, not a pixel boundary: restart exactly, once per edge.
-                *st = self.init(st.a);
-                return;
-            }
-            st.s -= ONE;
+            st.s -= st.h;
+            st.h = ONE;
             st.b += 1;
-            for ch in 0..C {
-                st.p[ch] += st.pg[ch] - (st.i[ch] << COVER_BITS) - (self.gv[ch] << COVER_BITS);
-                st.pb[ch] -= self.gu[ch] << COVER_BITS;
-                st.pg[ch] -= self.gv[ch] << COVER_BITS;
-                st.pa[ch] += self.gvq[ch];
-                st.i[ch] += self.gv[ch];
-            }
         }
     }
 
-    /// Walks to interior column `a`: one step from the previous column's
-    /// state, or a direct start when there is none (the walk's first
-    /// interior column, or after an end column); reports its pixels and
-    /// returns its chosen cell.
-    fn interior_column(&mut self, st: &mut Option<Step<C>>, a: i64) -> i64 {
-        let s = match st.take() {
-            Some(mut s) => {
+    /// The main term at interior column `a`: a step from the state at
+    /// `a - 1` when there is one, else a direct start.
+    #[inline]
+    fn main_term(&self, st: Option<Step>, a: i32) -> Step {
+        match st {
+            Some(mut s) if s.a + 1 == a => {
                 self.step(&mut s);
                 s
             }
-            None => self.init(a),
-        };
-        self.interior(&s);
-        let bc = s.b;
-        *st = Some(s);
-        bc
-    }
-
-    /// Reports the chosen pixel of a stepped column, and in exact mode moves
-    /// the spill of a minor-axis crossing to its true pixel.
-    fn interior(&mut self, st: &Step<C>) {
-        self.emit(st.a, st.b, st.s, &st.p);
-        if !self.exact || self.e.dv == 0 {
-            return;
+            _ => self.init(a),
         }
-        let du = self.e.du;
-        // Up-crossing: the line enters from the cell above inside this column.
-        if (st.s, st.r) < (self.kq, self.kr) {
-            let e = self.kq - st.s - i64::from(self.kr < st.r);
-            self.spill(st, st.b - 1, e);
-        }
-        // Down-crossing: it leaves into the cell below.
-        let carry = st.r + self.kr >= du;
-        let rem = st.r + self.kr - if carry { du } else { 0 };
-        let s2 = st.s + self.kq + i64::from(carry);
-        if s2 > st.h || (s2 == st.h && rem > 0) {
-            self.spill(st, st.b, s2 - st.h);
-        }
-    }
-
-    /// Moves the triangle `e^2 / (2k)` from cell `upper` to the cell below.
-    fn spill(&mut self, st: &Step<C>, upper: i64, e: i64) {
-        let e = e.max(0) as u64;
-        let t = ((e * e * self.inv) >> 32) as i64;
-        if t == 0 {
-            return;
-        }
-        let mut up = [0i64; C];
-        let mut down = [0i64; C];
-        for ch in 0..C {
-            let i_up = if upper == st.b {
-                st.i[ch]
-            } else {
-                st.i[ch] - self.gv[ch]
-            };
-            up[ch] = -(i_up * t);
-            down[ch] = (i_up + self.gv[ch]) * t;
-        }
-        self.emit(st.a, upper, -t, &up);
-        self.emit(st.a, upper + 1, t, &down);
     }
 
     // ---- reporting ---------------------------------------------------------
 
-    /// Reports canonical cell `(a, b)`: `cov` is the change of its low-`v`
-    /// area, `prod` is `I * cov` per channel (fine units).
-    fn emit(&mut self, a: i64, b: i64, cov: i64, prod: &[i64; C]) {
+    /// Reports canonical cell `(a, b)`'s change of low-`v` area `cov` if
+    /// its frame row is in `rows`.
+    #[inline]
+    fn emit<K: CoverSink>(&self, a: i32, b: i32, cov: i32, rows: &Range<i32>, sink: &mut K) {
         if cov == 0 {
             return;
         }
-        let (x, y) = self.e.pixel(a as i32, b as i32);
-        if i64::from(y) < self.ylo || i64::from(y) >= self.yhi {
-            return;
+        let (x, y) = self.e.pixel(a, b);
+        if rows.contains(&y) && x >= self.c_lo && x < self.c_hi {
+            sink.cell(x, y, self.sw * cov);
         }
-        let mut v = [0i32; C];
-        for ch in 0..C {
-            v[ch] = (self.sw * (prod[ch] >> PLANE_FRAC)) as i32;
-        }
-        self.sink.cell(x, y, (self.sw * cov) as i32, &v);
     }
 
-    /// Reports a cover change at frame column `x` directly (for the covers
-    /// of skipped columns, which all apply from the sink's first column).
-    fn cover_at(&mut self, y: i64, x: i64, h: i64) {
-        if y < self.ylo || y >= self.yhi || h == 0 {
-            return;
+    /// The spill of the crossing in column `a`: taken from the cell above
+    /// the boundary, given to the one below.
+    #[inline]
+    fn spill<K: CoverSink>(&self, a: i32, x: &Crossing, rows: &Range<i32>, sink: &mut K) {
+        if let Some(k) = &self.cross {
+            let t = x.spill(k);
+            self.emit(a, x.m - 1, -t, rows, sink);
+            self.emit(a, x.m, t, rows, sink);
         }
-        self.sink.cover(x as i32, y as i32, (self.w * h) as i32);
     }
 
-    fn cover(&mut self, y: i64, beta: i64, h: i64) {
-        if y < self.ylo || y >= self.yhi || h == 0 {
-            return;
+    /// Frame row `y`'s cover of height `h` from frame column `x` on.
+    #[inline]
+    fn cover<K: CoverSink>(&self, x: i32, y: i32, h: i32, rows: &Range<i32>, sink: &mut K) {
+        if h != 0 && rows.contains(&y) {
+            sink.cover(x, y, self.w * h);
         }
-        let x = self.e.cover_column(beta as i32);
-        self.sink.cover(x, y as i32, (self.w * h) as i32);
     }
 
-    /// An end column, computed directly from the exact area (per edge).
-    fn end_cells(
-        &mut self,
-        a: i64,
-        ulo: i64,
-        uhi: i64,
-        bc: i64,
-        rows: (i64, i64),
-        bg_of: impl Fn(&Self, i64) -> i64,
-    ) {
-        for b in rows.0..=rows.1 {
-            let (vlo, vhi) = if self.e.transposed {
-                (b * SUB, b * SUB + SUB)
+    /// An end column (or end row of a y-major edge), computed directly from
+    /// the exact area (per edge, twice).
+    fn end_cells<K: CoverSink>(&self, a: i32, bc: i32, rows: &Range<i32>, sink: &mut K) {
+        let e = &self.e;
+        let a64 = i64::from(a);
+        let (ulo, uhi) = if e.transposed {
+            ((a64 * N).max(e.u0), (a64 * N + N).min(e.u1))
+        } else {
+            (a64 * N, a64 * N + N)
+        };
+        let (mut lo, mut hi) = (e.cell_at(ulo), e.cell_at(uhi));
+        if !e.transposed {
+            lo = limit(lo, i64::from(self.b0), i64::from(self.b1));
+            hi = limit(hi, i64::from(self.b0), i64::from(self.b1));
+        }
+        for b in lo as i32..=hi as i32 {
+            let b64 = i64::from(b);
+            let (vlo, vhi) = if e.transposed {
+                (b64 * N, b64 * N + N)
             } else {
-                ((b * SUB).max(self.e.v0), (b * SUB + SUB).min(self.e.v1))
+                ((b64 * N).max(e.v0), (b64 * N + N).min(e.v1))
             };
-            let area = i64::from(clamped_area(&self.e, ulo, uhi, vlo, vhi));
-            let d = area - if b < bc { bg_of(self, b) } else { 0 };
-            if d != 0 {
-                let i = self.plane_at(a, b);
-                self.emit(a, b, d, &i.map(|v| v * d));
-            }
+            let area = clamped_area(e, ulo, uhi, vlo, vhi);
+            let full = if b >= bc {
+                0
+            } else if e.transposed {
+                self.column_cover(a)
+            } else {
+                self.row_cover(b)
+            };
+            self.emit(a, b, area - full, rows, sink);
         }
     }
 
-    // ---- the two walks -------------------------------------------------------
+    /// The last minor cell an end column's cells reach.
+    fn end_last_cell(&self, a: i32) -> i32 {
+        let c = self.e.cell_at(i64::from(a) * N + N);
+        limit(c, i64::from(self.b0), i64::from(self.b1)) as i32
+    }
 
-    /// Edges at most 45° from horizontal: columns are `x`, each band row may
-    /// hold a run of edge pixels; one cover change per row.
-    fn x_major(&mut self) {
-        let (a0, a1) = self.e.columns();
+    // ---- the two walks -----------------------------------------------------
+
+    /// Edges at most 45° from horizontal: major columns are frame columns,
+    /// a row holds a run of edge pixels; one cover change per row.
+    fn x_major<K: CoverSink>(&mut self, rows: Range<i32>, sink: &mut K) {
+        let (y0, y1) = (rows.start, rows.end);
         let (b0, b1) = (self.b0, self.b1);
-        if b1 < self.ylo || b0 >= self.yhi {
+        let lo = y0.max(b0);
+        let hi = y1.min(b1 + 1);
+        if lo >= hi {
             return;
         }
-        // First column whose centre lies at or below v_top (divides: setup).
-        let reach = |v_top: i64| {
-            let e = &self.e;
-            div_ceil((v_top - e.v0) * e.du + (e.u0 - SUB / 2) * e.dv, SUB * e.dv)
-        };
-        let a_start = if b0 >= self.ylo - 1 {
-            a0
+        // Rows whose covers lie left of the frame: straight to c_lo.
+        let left = if self.e.mirrored {
+            self.r_out..b1 + 1
         } else {
-            limit(reach((self.ylo - 1) * SUB), a0, a1)
+            b0..self.r_in
         };
-        let a_stop = if b1 <= self.yhi {
-            a1
-        } else {
-            limit(reach((self.yhi + 1) * SUB) - 1, a0, a1)
+        for row in lo.max(left.start)..hi.min(left.end) {
+            self.cover(self.c_lo, row, self.row_cover(row), &rows, sink);
+        }
+        // Where the walk starts: where the last band stopped, or directly
+        // at the column holding the crossing of this band's top boundary.
+        let start = match self.resume.take() {
+            Some(r) if r.row == y0 => r,
+            _ => self.x_start(y0),
         };
-        let mut prev = if a_start == a0 {
-            b0
-        } else {
-            self.centre_cell(a_start)
-        };
-        // Rows whose cover starts at or after column a_stop + 1 (exclusive
-        // end of the rows this walk reports covers for).
-        let rows_end = if a_stop == a1 {
-            b1 + 1
-        } else {
-            self.centre_cell(a_stop)
-        };
-        // Only the columns the sink keeps need walking. Left of them, cover
-        // changes apply from its first column; right of them, they are
-        // dropped. Which side is which depends on the mirror.
-        let cols = self.sink.columns();
-        let (c_lo, c_hi) = (i64::from(cols.start), i64::from(cols.end));
-        let (vis_lo, vis_hi) = if self.e.mirrored {
-            (-c_hi, -1 - c_lo)
-        } else {
-            (c_lo, c_hi - 1)
-        };
-        let w_start = a_start.max(vis_lo);
-        let w_stop = a_stop.min(vis_hi);
-        if w_start > a_start {
-            let reached = if w_start > a_stop {
-                rows_end
+        let (mut a, mut prev, mut st, mut x) = (start.a, start.prev, start.st, start.x);
+        let mut next: Option<Resume> = None;
+        loop {
+            if a > self.vb {
+                if a > self.a1 && self.vb == self.a1 {
+                    // Past the end: the last rows' covers right of it.
+                    for row in prev..=b1 {
+                        let col = self.e.cover_column(self.a1 + 1);
+                        self.cover(col, row, self.row_cover(row), &rows, sink);
+                    }
+                }
+                // Nothing more to walk from here, unless a column already
+                // walked reaches into the next band.
+                next = next.or(Some(Resume {
+                    row: y1,
+                    a,
+                    prev,
+                    st: None,
+                    x: None,
+                }));
+                break;
+            }
+            let is_end = a == self.a0 || a == self.a1;
+            let (bc, last, stepped) = if is_end {
+                (self.centre_cell(a), self.end_last_cell(a), None)
             } else {
-                self.centre_cell(w_start)
+                let s = self.main_term(st, a);
+                let down = match (&x, &self.cross) {
+                    (Some(x), Some(k)) => x.col == a && !x.is_left(k),
+                    _ => false,
+                };
+                (s.b, s.b + i32::from(down), Some(s))
             };
-            if !self.e.mirrored {
-                for row in prev..reached {
-                    self.cover_at(row, c_lo, self.row_cover(row));
+            if next.is_none() && last >= y1 {
+                // The first column reaching below this band: the next band
+                // starts here.
+                next = Some(Resume {
+                    row: y1,
+                    a,
+                    prev,
+                    st,
+                    x,
+                });
+            }
+            if let Some(s) = &stepped {
+                self.emit(a, s.b, s.s, &rows, sink);
+                if let Some(c) = x.as_mut().filter(|c| c.col == a) {
+                    self.spill(a, c, &rows, sink);
+                    if let Some(k) = &self.cross {
+                        c.advance(k);
+                    }
+                }
+            } else {
+                self.end_cells(a, bc, &rows, sink);
+                // Crossings inside an end column are in its direct areas.
+                if let (Some(c), Some(k)) = (x.as_mut(), &self.cross) {
+                    while c.col <= a && c.m <= self.last_boundary() {
+                        c.advance(k);
+                    }
                 }
             }
-            prev = prev.max(reached);
-        }
-        let mut st: Option<Step<C>> = None;
-        for a in w_start..=w_stop {
-            let bc = if a == a0 || a == a1 {
-                st = None;
-                let bc = self.centre_cell(a);
-                let row =
-                    |u: i64| limit(div_floor(self.e.v_num_clamped(u), SUB * self.e.du), b0, b1);
-                let rows = (row(a * SUB), row(a * SUB + SUB));
-                self.end_cells(a, a * SUB, a * SUB + SUB, bc, rows, |s, b| s.row_cover(b));
-                bc
-            } else {
-                self.interior_column(&mut st, a)
-            };
+            let col = self.e.cover_column(a);
             for row in prev..bc {
-                self.cover(row, a, self.row_cover(row));
+                self.cover(col, row, self.row_cover(row), &rows, sink);
             }
             prev = prev.max(bc);
+            st = stepped;
+            if bc >= y1 {
+                break;
+            }
+            a += 1;
         }
-        if w_stop < a_stop {
-            if self.e.mirrored {
-                for row in prev..rows_end {
-                    self.cover_at(row, c_lo, self.row_cover(row));
-                }
-            }
-        } else if a_stop == a1 {
-            for row in prev..=b1 {
-                self.cover(row, a1 + 1, self.row_cover(row));
-            }
+        self.resume = next;
+    }
+
+    /// The state at which band `y0`'s walk starts, evaluated directly
+    /// (divides).
+    fn x_start(&self, y0: i32) -> Resume {
+        let e = &self.e;
+        let col = if y0 <= self.b0 {
+            self.a0
+        } else {
+            // The column holding the crossing of the band's top boundary.
+            let t = e.u0 * e.dv + (i64::from(y0) * N - e.v0) * e.du;
+            div_floor(t, N * e.dv) as i32
+        };
+        let a = col.max(self.va);
+        let prev = if a == self.a0 {
+            self.b0
+        } else {
+            (y0 - 1).max(self.b0).max(if self.e.mirrored {
+                self.b0
+            } else {
+                self.r_in
+            })
+        };
+        // The next crossing at or after column a.
+        let x = if a > self.vb {
+            None
+        } else {
+            let m = if a == self.a0 {
+                self.b0 + 1
+            } else {
+                self.centre_cell(a)
+            };
+            self.crossing_from(m.max(self.b0 + 1), a - 1)
+        };
+        Resume {
+            row: y0,
+            a,
+            prev,
+            st: None,
+            x,
         }
     }
 
-    /// Edges steeper than 45°: columns of the walk are frame rows, one or
-    /// two edge pixels each, one cover change each.
-    fn y_major(&mut self) {
-        let (a0, a1) = self.e.columns();
-        let lo = a0.max(self.ylo);
-        let hi = a1.min(self.yhi - 1);
-        let mut st: Option<Step<C>> = None;
-        for a in lo..=hi {
-            let bc = if a == a0 || a == a1 {
+    /// Edges steeper than 45°: major columns are frame rows, one or two
+    /// edge pixels each, one cover change each.
+    fn y_major<K: CoverSink>(&mut self, rows: Range<i32>, sink: &mut K) {
+        let lo = rows.start.max(self.a0);
+        let hi = rows.end.min(self.a1 + 1);
+        if lo >= hi {
+            return;
+        }
+        let (mut st, mut x) = match self.resume.take() {
+            Some(r) if r.a == lo => (r.st, r.x),
+            _ => {
+                let m = if lo == self.a0 {
+                    div_floor(self.e.v0, N) as i32 + 1
+                } else {
+                    self.centre_cell(lo)
+                };
+                (None, self.crossing_from(m, lo - 1))
+            }
+        };
+        for a in lo..hi {
+            let bc = if a == self.a0 || a == self.a1 {
                 st = None;
-                let (ulo, uhi) = ((a * SUB).max(self.e.u0), (a * SUB + SUB).min(self.e.u1));
                 let bc = self.centre_cell(a);
-                let cell = |u: i64| div_floor(self.e.v_num_clamped(u), SUB * self.e.du);
-                let rows = (cell(ulo), cell(uhi));
-                self.end_cells(a, ulo, uhi, bc, rows, |s, _| s.column_cover(a));
+                self.end_cells(a, bc, &rows, sink);
+                if let (Some(c), Some(k)) = (x.as_mut(), &self.cross) {
+                    while c.col <= a && c.m <= self.last_boundary() {
+                        c.advance(k);
+                    }
+                }
                 bc
             } else {
-                self.interior_column(&mut st, a)
+                let s = self.main_term(st, a);
+                self.emit(a, s.b, s.s, &rows, sink);
+                if let Some(c) = x.as_mut().filter(|c| c.col == a) {
+                    self.spill(a, c, &rows, sink);
+                    if let Some(k) = &self.cross {
+                        c.advance(k);
+                    }
+                }
+                st = Some(s);
+                s.b
             };
-            self.cover(a, bc, self.column_cover(a));
+            self.cover(
+                self.e.cover_column(bc),
+                a,
+                self.column_cover(a),
+                &rows,
+                sink,
+            );
         }
+        self.resume = Some(Resume {
+            row: hi,
+            a: hi,
+            prev: 0,
+            st,
+            x,
+        });
     }
 }
-
-// SUB_BITS documents the unit of `SUB`; keep the two tied together.
-const _: () = assert!(SUB == 1 << SUB_BITS);

@@ -136,7 +136,7 @@ pub use warnock::{
 };
 pub use weiler::{VisiblePiece, VisibleSet, WeilerStats, PIECE_VERTICES};
 pub use zbuffer::DepthBuffer;
-pub(crate) use zbuffer::FULL;
+pub(crate) use zbuffer::{FULL, FULL_BITS};
 
 /// Which pass of the z-buffer a [`DepthTriangle::draw_z`] call makes (see
 /// the module documentation; [`draw_zbuffer`] runs them in order).
@@ -160,7 +160,7 @@ use core::cmp::Ordering;
 
 use crate::band::BandBuffer;
 use crate::geom::SubPoint;
-use crate::raster::{walk_outline, Cells, DrawError, RenderStyle, Triangle};
+use crate::raster::{walk_outline, DrawError, RenderStyle, Triangle};
 use crate::shade::Plane;
 
 /// Which hidden-surface method draws a frame.
@@ -242,7 +242,7 @@ impl<const C: usize> DepthTriangle<C> {
     /// ```
     /// use softedge::hsr::{DepthBuffer, DepthTriangle, ZPass};
     /// use softedge::{Band, BandBuffer, RenderStyle, SubPoint};
-    /// let band = Band { width: 8, y0: 0, rows: 8 };
+    /// let band = Band::new(8, 0, 8);
     /// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
     /// let (mut depth, mut covered) = ([0u16; 64], [0u16; 64]);
     /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
@@ -285,8 +285,7 @@ impl<const C: usize> DepthTriangle<C> {
             *style
         };
         let slope = zplane.slope();
-        if let Some(rows) = walk_outline(band, &self.vertices, &plane, &walk_style, Cells::AsCover)
-        {
+        if let Some(rows) = walk_outline(band, &self.vertices, &walk_style) {
             band.sweep_depth(rows.start, rows.end, &plane, &zplane, slope, zbuf, pass);
         }
         Ok(())
@@ -307,7 +306,7 @@ impl<const C: usize> DepthTriangle<C> {
 /// ```
 /// use softedge::hsr::{draw_zbuffer, sort_front_to_back, DepthBuffer, DepthTriangle};
 /// use softedge::{Band, BandBuffer, RenderStyle, SubPoint};
-/// let band = Band { width: 8, y0: 0, rows: 8 };
+/// let band = Band::new(8, 0, 8);
 /// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
 /// let (mut depth, mut covered) = ([0u16; 64], [0u16; 64]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();

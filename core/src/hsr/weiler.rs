@@ -564,7 +564,7 @@ pub struct WeilerStats {
 /// let mut set = VisibleSet::<16>::new();
 /// let stats = set.compute(&tris).unwrap();
 /// assert_eq!(stats.occlusions, 1);
-/// let band = Band { width: 8, y0: 0, rows: 8 };
+/// let band = Band::new(8, 0, 8);
 /// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
@@ -1124,7 +1124,6 @@ impl<const N: usize> VisibleSet<N> {
     ) -> Result<(), HsrError> {
         let info = band.band();
         let (y0, y1) = (info.y0, info.y0 + i32::from(info.rows));
-        let bg = band.background();
         for piece in &self.pieces {
             let b = piece.0.bbox();
             // Two pixels of margin: the circular pixel models reach 1.5 px
@@ -1136,10 +1135,11 @@ impl<const N: usize> VisibleSet<N> {
             let t = tris.get(piece.source()).ok_or(HsrError::Capacity {
                 needed: piece.source() + 1,
             })?;
-            let Some(plane) = Plane::triangle(t.vertices, t.colors, bg) else {
+            let Some(plane) = Plane::triangle(t.vertices, t.colors, [0; C]) else {
                 continue;
             };
-            fill(band, piece.vertices(), &plane, style);
+            let add = crate::band::ComposeOp::Add(crate::style::Opacity::OPAQUE);
+            fill(band, piece.vertices(), &crate::band::Paint::Plane(&plane), add, style);
         }
         Ok(())
     }

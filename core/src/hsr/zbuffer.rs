@@ -1,7 +1,6 @@
 //! The depth buffer of one band: a depth and a coverage count per pixel.
 
 use crate::band::{Band, BandError, MAX_WIDTH};
-use crate::COVER_ONE;
 
 /// Depth and coverage of one band's pixels, over caller-provided storage.
 ///
@@ -12,7 +11,7 @@ use crate::COVER_ONE;
 ///   two surfaces are ordered wrongly only where they are closer in depth
 ///   than that; 32-bit depth would double the RAM for no visible change.
 /// - `covered`: how much of the pixel surfaces already claim, in 1/4096 px
-///   ([`COVER_ONE`]): what lets anti-aliased edges meet the z-buffer (see
+///   (`FULL`): what lets anti-aliased edges meet the z-buffer (see
 ///   [`hsr`](crate::hsr)). 13 bits are used; `u16` keeps it aligned.
 ///
 /// For 240x240 and 16-row bands that is `2 * 2 * 240 * 16` = 15 360 bytes
@@ -114,5 +113,8 @@ impl<'a> DepthBuffer<'a> {
     }
 }
 
-/// Full coverage as stored in [`DepthBuffer`].
-pub(crate) const FULL: u16 = COVER_ONE as u16;
+/// Full coverage as stored in [`DepthBuffer`]: 12 bits of a pixel (the
+/// band's coverage, 1/65536 px, rounded down to 1/4096 px).
+pub(crate) const FULL: u16 = 1 << FULL_BITS;
+/// `log2(FULL)`.
+pub(crate) const FULL_BITS: u32 = 12;

@@ -7,7 +7,8 @@ use core::ops::Range;
 use super::{tent_sum, tent_weight};
 use crate::arith::{div_ceil, div_floor};
 use crate::band::BandBuffer;
-use crate::edge::{walk_edge_aliased, EdgeSink};
+use super::walk_samples;
+use crate::edge::CoverSink;
 use crate::{SubPoint, COVER_ONE};
 
 /// `CUM[t] = sum of w_k for k in t..2n`: the weight of the samples right of
@@ -38,7 +39,6 @@ pub(crate) fn walk_bed_of_nails<const C: usize>(
     band: &mut BandBuffer<'_, C>,
     p0: SubPoint,
     p1: SubPoint,
-    orientation: i32,
     n: usize,
     rows: Range<i32>,
 ) {
@@ -48,7 +48,7 @@ pub(crate) fn walk_bed_of_nails<const C: usize>(
     let half = scale / 2;
     let fine_rows = rows.start.saturating_mul(scale) - half..rows.end.saturating_mul(scale) + half;
     let mut sink = Distribute { band, n, rows };
-    walk_edge_aliased::<C, _>(fine(p0), fine(p1), orientation, fine_rows, &mut sink);
+    walk_samples(fine(p0), fine(p1), fine_rows, &mut sink);
 }
 
 /// Turns the fine grid's cover changes into pixel coverage.
@@ -58,8 +58,8 @@ struct Distribute<'a, 'b, const C: usize> {
     rows: Range<i32>,
 }
 
-impl<const C: usize> EdgeSink<C> for Distribute<'_, '_, C> {
-    fn cell(&mut self, _: i32, _: i32, _: i32, _: &[i32; C]) {}
+impl<const C: usize> CoverSink for Distribute<'_, '_, C> {
+    fn cell(&mut self, _: i32, _: i32, _: i32) {}
 
     fn cover(&mut self, c: i32, r: i32, delta: i32) {
         let sign = delta.signum();

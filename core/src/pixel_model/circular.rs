@@ -57,7 +57,8 @@ use core::ops::Range;
 
 use super::splat::{splat_row, RowFootprint};
 use crate::band::BandBuffer;
-use crate::edge::{walk_edge_aliased, EdgeSink};
+use super::walk_samples;
+use crate::edge::CoverSink;
 use crate::SubPoint;
 
 /// Samples per pixel and axis: one per sub-pixel.
@@ -332,7 +333,6 @@ pub(crate) fn walk_circular<const C: usize>(
     band: &mut BandBuffer<'_, C>,
     p0: SubPoint,
     p1: SubPoint,
-    orientation: i32,
     filter: CircularFilter,
     rows: Range<i32>,
 ) {
@@ -350,7 +350,7 @@ pub(crate) fn walk_circular<const C: usize>(
         half: i64::from(half),
         rows,
     };
-    walk_edge_aliased::<C, _>(fine(p0), fine(p1), orientation, fine_rows, &mut sink);
+    walk_samples(fine(p0), fine(p1), fine_rows, &mut sink);
 }
 
 /// Spreads the fine grid's cover changes over the filter's footprints.
@@ -362,8 +362,8 @@ struct Splat<'a, 'b, const C: usize> {
     rows: Range<i32>,
 }
 
-impl<const C: usize> EdgeSink<C> for Splat<'_, '_, C> {
-    fn cell(&mut self, _: i32, _: i32, _: i32, _: &[i32; C]) {}
+impl<const C: usize> CoverSink for Splat<'_, '_, C> {
+    fn cell(&mut self, _: i32, _: i32, _: i32) {}
 
     fn cover(&mut self, c: i32, r: i32, delta: i32) {
         let n = CIRCULAR_SAMPLES as i64;

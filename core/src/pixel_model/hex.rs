@@ -58,7 +58,8 @@ pub fn hex7_offsets(dx: i64, dy: i64) -> [i64; 7] {
 use super::splat::{splat_row, suffix_sums, RowFootprint};
 use crate::arith::div_ceil;
 use crate::band::BandBuffer;
-use crate::edge::{walk_edge_aliased, EdgeSink};
+use super::walk_samples;
+use crate::edge::CoverSink;
 use crate::{SubPoint, COVER_ONE, SUB_ONE};
 
 /// Sum of a pixel's point weights: 2 + 6 * 1.
@@ -70,7 +71,6 @@ pub(crate) fn walk_hex7<const C: usize>(
     band: &mut BandBuffer<'_, C>,
     p0: SubPoint,
     p1: SubPoint,
-    orientation: i32,
     rows: Range<i32>,
 ) {
     let quarter = SUB_ONE / 4;
@@ -92,10 +92,9 @@ pub(crate) fn walk_hex7<const C: usize>(
             row_a,
             rows: rows.clone(),
         };
-        walk_edge_aliased::<C, _>(
+        walk_samples(
             fine(p0, dx),
             fine(p1, dx),
-            orientation,
             fine_rows.clone(),
             &mut sink,
         );
@@ -128,8 +127,8 @@ impl<const C: usize> HexRows<'_, '_, C> {
     }
 }
 
-impl<const C: usize> EdgeSink<C> for HexRows<'_, '_, C> {
-    fn cell(&mut self, _: i32, _: i32, _: i32, _: &[i32; C]) {}
+impl<const C: usize> CoverSink for HexRows<'_, '_, C> {
+    fn cell(&mut self, _: i32, _: i32, _: i32) {}
 
     fn cover(&mut self, c: i32, g: i32, delta: i32) {
         let is_a = g.rem_euclid(2) == 0;
@@ -267,7 +266,6 @@ pub(crate) fn walk_hex19<const C: usize>(
     band: &mut BandBuffer<'_, C>,
     p0: SubPoint,
     p1: SubPoint,
-    orientation: i32,
     rows: Range<i32>,
 ) {
     let quarter = SUB_ONE / 4;
@@ -287,10 +285,9 @@ pub(crate) fn walk_hex19<const C: usize>(
             row_a,
             rows: rows.clone(),
         };
-        walk_edge_aliased::<C, _>(
+        walk_samples(
             fine(p0, dx),
             fine(p1, dx),
-            orientation,
             fine_rows.clone(),
             &mut sink,
         );
@@ -304,8 +301,8 @@ struct Hex19Rows<'a, 'b, const C: usize> {
     rows: Range<i32>,
 }
 
-impl<const C: usize> EdgeSink<C> for Hex19Rows<'_, '_, C> {
-    fn cell(&mut self, _: i32, _: i32, _: i32, _: &[i32; C]) {}
+impl<const C: usize> CoverSink for Hex19Rows<'_, '_, C> {
+    fn cell(&mut self, _: i32, _: i32, _: i32) {}
 
     fn cover(&mut self, c: i32, g: i32, delta: i32) {
         let is_a = g.rem_euclid(2) == 0;

@@ -24,7 +24,7 @@
 //! A small object moving across the grid keeps its total weight exactly.
 //!
 //! Samples are taken with the aliased walk
-//! ([`walk_edge_aliased`](crate::edge::walk_edge_aliased)) on a grid
+//! ([`AliasedWalk`](crate::edge::AliasedWalk)) on a grid
 //! `n` times finer than the pixels, whose pixel centres are exactly the
 //! sample points; its top-left rule gives every sample on a shared edge to
 //! exactly one primitive, so meshes stay seamless to the last bit. A sample
@@ -159,5 +159,21 @@ mod tests {
         assert_eq!(a + 2 * b + c, 16);
         assert_eq!(tent_sum(2) * tent_sum(2), 64);
         assert_eq!(tent_sum(4) * tent_sum(4), 1024);
+    }
+}
+
+/// The aliased walk of an edge given on a sample grid: `p0`, `p1` in 1/16
+/// of a sample (a [`SubPoint`](crate::SubPoint) scaled by the samples per
+/// pixel), rows in samples. Sample centres on a shared edge go to exactly
+/// one shape (the top-left rule), so sampled meshes stay seamless.
+pub(super) fn walk_samples<K: crate::edge::CoverSink>(
+    p0: crate::SubPoint,
+    p1: crate::SubPoint,
+    rows: core::ops::Range<i32>,
+    sink: &mut K,
+) {
+    let fine = |p: crate::SubPoint| crate::geom::FinePoint::from(p);
+    if let Some(mut w) = crate::edge::AliasedWalk::new(fine(p0), fine(p1)) {
+        w.walk(rows, sink);
     }
 }

@@ -29,11 +29,12 @@
 
 pub(crate) mod simple;
 
-use crate::band::BandBuffer;
-use crate::edge::{walk_edge, walk_edge_aliased, AreaMode, EdgeSink};
-use crate::geom::{area2, CoordError, SubPoint};
+use crate::band::{BandBuffer, ComposeOp, Paint};
+use crate::edge::{AliasedWalk, AreaMode, EdgeWalk};
+use crate::geom::{CoordError, FinePoint, SubPoint};
 use crate::pixel_model::{walk_bed_of_nails, walk_circular, walk_hex19, walk_hex7, CircularFilter};
 use crate::shade::Plane;
+use crate::style::{FillRule, Opacity};
 use crate::SUB_BITS;
 
 /// Most vertices a [`Polygon`] may have.
@@ -126,7 +127,7 @@ impl From<CoordError> for DrawError {
 ///
 /// ```
 /// use softedge::{Band, BandBuffer, RenderStyle, SubPoint, Triangle};
-/// let band = Band { width: 8, y0: 0, rows: 8 };
+/// let band = Band::new(8, 0, 8);
 /// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
@@ -158,16 +159,22 @@ impl<const C: usize> Triangle<C> {
         }
     }
 
-    /// Accumulates the triangle into the band.
+    /// Accumulates the triangle into the band (seed 000's `I_acc += I * S`,
+    /// relative to the band's background).
     pub fn draw(&self, band: &mut BandBuffer<'_, C>, style: &RenderStyle) -> Result<(), DrawError> {
         for v in self.vertices {
             v.check()?;
         }
-        let bg = band.background();
-        let Some(plane) = Plane::triangle(self.vertices, self.colors, bg) else {
+        let Some(plane) = Plane::triangle(self.vertices, self.colors, [0; C]) else {
             return Ok(());
         };
-        fill(band, &self.vertices, &plane, style);
+        let [c0, c1, c2] = self.colors;
+        let paint = if c0 == c1 && c1 == c2 {
+            Paint::Flat(c0.map(|v| v.min(crate::LIN_MAX)))
+        } else {
+            Paint::Plane(&plane)
+        };
+        fill(band, &self.vertices, &paint, ComposeOp::Add(Opacity::OPAQUE), style);
         Ok(())
     }
 }
@@ -187,7 +194,7 @@ pub enum PolygonColors<'a, const C: usize> {
 ///
 /// ```
 /// use softedge::{Band, BandBuffer, Polygon, PolygonColors, RenderStyle, SubPoint};
-/// let band = Band { width: 8, y0: 0, rows: 8 };
+/// let band = Band::new(8, 0, 8);
 /// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
@@ -217,16 +224,17 @@ impl<'a, const C: usize> Polygon<'a, C> {
         let Some(p) = self.prepare::<0>(None)? else {
             return Ok(());
         };
-        let bg = band.background();
+        let add = ComposeOp::Add(Opacity::OPAQUE);
         if let Some(&first) = p.colors.first() {
             if p.colors.iter().all(|c| *c == first) {
-                fill(band, &p.points, &Plane::flat(first, bg), style);
+                let paint = Paint::Flat(first.map(|v| v.min(crate::LIN_MAX)));
+                fill(band, &p.points, &paint, add, style);
                 return Ok(());
             }
         }
         p.triangles(|tri, colors, _| {
-            if let Some(plane) = Plane::triangle(tri, colors, bg) {
-                fill(band, &tri, &plane, style);
+            if let Some(plane) = Plane::triangle(tri, colors, [0; C]) {
+                fill(band, &tri, &Paint::Plane(&plane), add, style);
             }
         })
     }
@@ -352,7 +360,7 @@ impl<const C: usize, const D: usize> Prepared<C, D> {
 ///
 /// ```
 /// use softedge::{Band, BandBuffer, Line, RenderStyle, SubPoint};
-/// let band = Band { width: 8, y0: 0, rows: 4 };
+/// let band = Band::new(8, 0, 4);
 /// let (mut acc, mut cover) = ([0i32; 32], [0i32; 40]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
@@ -386,21 +394,23 @@ impl<const C: usize> Line<C> {
             return Ok(());
         };
         let [c0, c1] = self.colors;
-        let Some(plane) =
-            Plane::triangle([quad[0], quad[1], quad[2]], [c0, c1, c1], band.background())
-        else {
+        let bg = band.background();
+        let Some(plane) = Plane::triangle([quad[0], quad[1], quad[2]], [c0, c1, c1], bg) else {
             return Ok(());
         };
         // Rounding the corners to 1/16 px changes the rectangle's area by up
         // to a few per cent, depending on the angle: scale the intensity
-        // once by ideal / actual area so the line's energy is exact.
+        // (relative to the background, what the line adds) once by ideal /
+        // actual area so the line's energy is exact.
         // (Aliased lines keep their colour: their energy is a pixel count.)
         let plane = if style.antialias {
             plane.scaled(ideal, actual)
         } else {
             plane
         };
-        fill(band, &quad, &plane, style);
+        let absolute = plane.offset(bg);
+        let paint = Paint::Plane(&absolute);
+        fill(band, &quad, &paint, ComposeOp::Add(Opacity::OPAQUE), style);
         Ok(())
     }
 
@@ -466,40 +476,30 @@ impl<const C: usize> Line<C> {
     }
 }
 
-/// Walks every edge of a closed outline sharing one plane, then sweeps its
-/// spans. The outline must be simple (or a triangle).
+/// Walks every edge of a closed outline into the band's scratch, then
+/// composes it once with `paint`. The outline is filled by the nonzero
+/// rule, so either orientation gives the same pixels.
 #[inline(never)] // kept out of line so profiles can name it
 pub(crate) fn fill<const C: usize>(
     band: &mut BandBuffer<'_, C>,
     v: &[SubPoint],
-    plane: &Plane<C>,
+    paint: &Paint<'_, C>,
+    op: ComposeOp,
     style: &RenderStyle,
 ) {
-    if let Some(rows) = walk_outline(band, v, plane, style, Cells::Accumulate) {
-        band.sweep(rows.start, rows.end, plane);
+    if let Some(rows) = walk_outline(band, v, style) {
+        band.compose(rows.start, rows.end, FillRule::NonZero, paint, op);
     }
 }
 
-/// Where the box model's edge pixels go.
-#[derive(Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Cells {
-    /// `I * S` straight into the accumulator (the seed-001 evaluator).
-    Accumulate,
-    /// Coverage only, as a pair of cover changes (`+S` at the pixel, `-S`
-    /// right of it) in the scratch, so the sweep sees each pixel's whole
-    /// coverage: what a depth test needs.
-    AsCover,
-}
-
-/// Walks every edge of a closed outline into the band (edge pixels and
-/// cover changes) and returns the frame rows the sweep must visit, or
-/// `None` when the outline cannot touch the band.
+/// Walks every edge of a closed outline into the band's scratch (the
+/// winding integral per pixel, under the style's pixel model) and returns
+/// the frame rows the sweep must visit, or `None` when the outline cannot
+/// touch the band.
 pub(crate) fn walk_outline<const C: usize>(
     band: &mut BandBuffer<'_, C>,
     v: &[SubPoint],
-    plane: &Plane<C>,
     style: &RenderStyle,
-    cells: Cells,
 ) -> Option<core::ops::Range<i32>> {
     let info = band.band();
     let (mut x_min, mut x_max, mut y_min, mut y_max) = (i32::MAX, i32::MIN, i32::MAX, i32::MIN);
@@ -536,61 +536,40 @@ pub(crate) fn walk_outline<const C: usize>(
     let (y_min, y_max) = (y_min.saturating_sub(margin), y_max.saturating_add(margin));
     let rows = (y_min >> SUB_BITS).max(info.y0)..((y_max >> SUB_BITS) + 1).min(band_end);
     // Wholly above, below, right or left of the band: nothing to add (left
-    // of it, the edges' covers would cancel at column 0).
-    if rows.start >= rows.end || (x_min >> SUB_BITS) >= i32::from(info.width) || x_max < 0 {
+    // of it, the edges' covers would cancel at its first column).
+    let cols = info.column_range();
+    if rows.start >= rows.end || (x_min >> SUB_BITS) >= cols.end || (x_max >> SUB_BITS) < cols.start
+    {
         return None;
     }
-    // Inside lies right of edges that run down the screen for a
-    // counter-clockwise (negative area) outline.
-    let orientation = if area2(v) > 0 { -1 } else { 1 };
     let mode = match style.model {
         PixelModel::BoxSeed => AreaMode::SeedFormula,
         _ => AreaMode::Exact,
     };
     let n = v.len();
     for k in 0..n {
-        let (p0, p1) = (v[k], v[(k + 1) % n]);
+        let (Some(&p0), Some(&p1)) = (v.get(k), v.get((k + 1) % n)) else {
+            continue;
+        };
         if !style.antialias {
-            walk_edge_aliased::<C, _>(p0, p1, orientation, rows.clone(), band);
+            if let Some(mut w) = AliasedWalk::new(FinePoint::from(p0), FinePoint::from(p1)) {
+                w.walk(rows.clone(), band);
+            }
         } else if samples > 0 {
-            walk_bed_of_nails(band, p0, p1, orientation, samples, rows.clone());
+            walk_bed_of_nails(band, p0, p1, samples, rows.clone());
         } else if let Some(filter) = circular {
-            walk_circular(band, p0, p1, orientation, filter, rows.clone());
+            walk_circular(band, p0, p1, filter, rows.clone());
         } else if hex && style.model == PixelModel::Hex19 {
-            walk_hex19(band, p0, p1, orientation, rows.clone());
+            walk_hex19(band, p0, p1, rows.clone());
         } else if hex {
-            walk_hex7(band, p0, p1, orientation, rows.clone());
-        } else if cells == Cells::AsCover {
-            walk_edge(
-                p0,
-                p1,
-                orientation,
-                plane,
-                mode,
-                rows.clone(),
-                &mut CellsAsCover(band),
-            );
-        } else {
-            walk_edge(p0, p1, orientation, plane, mode, rows.clone(), band);
+            walk_hex7(band, p0, p1, rows.clone());
+        } else if let Some(mut w) =
+            EdgeWalk::new(FinePoint::from(p0), FinePoint::from(p1), mode, cols.clone())
+        {
+            w.walk(rows.clone(), band);
         }
     }
     Some(rows)
-}
-
-/// An edge sink that turns each edge pixel into a pair of cover changes.
-struct CellsAsCover<'x, 'a, const C: usize>(&'x mut BandBuffer<'a, C>);
-
-impl<const C: usize> EdgeSink<C> for CellsAsCover<'_, '_, C> {
-    fn cell(&mut self, x: i32, y: i32, coverage: i32, _value: &[i32; C]) {
-        self.0.add_cover(x, y, coverage);
-        self.0.add_cover(x.saturating_add(1), y, -coverage);
-    }
-    fn cover(&mut self, x: i32, y: i32, delta: i32) {
-        self.0.add_cover(x, y, delta);
-    }
-    fn columns(&self) -> core::ops::Range<i32> {
-        0..i32::from(self.0.band().width)
-    }
 }
 
 #[cfg(test)]
@@ -601,13 +580,9 @@ mod tests {
     use super::*;
     use crate::band::Band;
 
-    /// Sum of the raw accumulation (lin12 * 4096) over an 80x80 frame.
+    /// Sum of the raw accumulation (lin12 * 65536) over an 80x80 frame.
     fn energy(draw: impl Fn(&mut BandBuffer<'_, 1>) -> Result<(), DrawError>) -> i64 {
-        let band = Band {
-            width: 80,
-            y0: 0,
-            rows: 80,
-        };
+        let band = Band::new(80, 0, 80);
         let mut acc = vec![0i32; BandBuffer::<1>::acc_len(80, 80)];
         let mut cover = vec![0i32; BandBuffer::<1>::cover_len(80, 80)];
         let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
@@ -632,7 +607,7 @@ mod tests {
             let e =
                 energy(|b| Line::new(from, to, [[4095], [4095]]).draw(b, &RenderStyle::default()));
             let len = f64::from(dx * dx + dy * dy).sqrt() / 16.0;
-            let ratio = e as f64 / (4095.0 * 4096.0 * len);
+            let ratio = e as f64 / (4095.0 * 65536.0 * len);
             assert!(
                 (ratio - 1.0).abs() < 0.001,
                 "{deg} degrees: energy ratio {ratio}"
@@ -671,7 +646,7 @@ mod tests {
         let a = energy(|b| Polygon::new(&sq, PolygonColors::Flat([4095])).draw(b, &style));
         let r = energy(|b| Polygon::new(&rep, PolygonColors::Flat([4095])).draw(b, &style));
         assert_eq!(a, r);
-        assert_eq!(a, 64 * 4095 * 4096);
+        assert_eq!(a, 64 * 4095 * 65536);
         let line = [(1, 1), (5, 5), (9, 9), (3, 3)].map(|(x, y)| SubPoint::from_px(x, y));
         assert_eq!(
             energy(|b| Polygon::new(&line, PolygonColors::Flat([4095])).draw(b, &style)),

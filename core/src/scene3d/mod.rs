@@ -54,7 +54,7 @@
 //! let mut scratch = [ViewVertex::<1>::EMPTY; 114];
 //!
 //! let (mut acc, mut cover) = ([0i32; 32 * 32], [0i32; 34 * 32]);
-//! let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band { width: 32, y0: 0, rows: 32 }).unwrap();
+//! let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band::new(32, 0, 32)).unwrap();
 //! buf.clear([0]);
 //! let stats = project(&parts, &Transform::IDENTITY, &view, &light, &mut scratch, |t| {
 //!     // Emitted triangles are inside the coordinate range: drawing cannot fail.

@@ -203,6 +203,16 @@ impl<const C: usize> Plane<C> {
         }
     }
 
+    /// The plane moved up by `background` (per channel, linear 12-bit): a
+    /// plane relative to a background made absolute.
+    pub(crate) fn offset(&self, background: [u16; C]) -> Self {
+        let mut out = *self;
+        for (a, b) in out.at0.iter_mut().zip(background) {
+            *a = a.saturating_add(i32::from(b.min(LIN_MAX)) << PLANE_FRAC);
+        }
+        out
+    }
+
     /// True when the plane is constant (a flat colour).
     pub fn is_flat(&self) -> bool {
         self.gx.iter().chain(self.gy.iter()).all(|&g| g == 0)

@@ -1,0 +1,18 @@
+//! Units every stage shares: coverage and the accumulator's fixed point.
+//!
+//! Kept below the stages (geometry, edges, band, compose, tone) so that none
+//! of them owns a unit the others depend on.
+
+/// Coverage of one whole pixel: `2^16`.
+///
+/// Edge walks report signed areas in these units (each an exact floor, so a
+/// pixel cut by a few edges is within a few 1/65536 px of its true area),
+/// the band's scratch sums them, and the accumulator holds
+/// `lin12 * COVER_ONE` per channel: a fully covered pixel of intensity 4095
+/// is `4095 * 2^16 < 2^28`, and rounding to 12 bits happens once, when the
+/// band is resolved. The fine unit matters for small shapes: a disc of
+/// radius 1/2 px has some 30 edge cells, and their floors, at 1/4096 px
+/// each, would lose up to 1 % of its area; at 1/65536 px, 0.06 %.
+pub const COVER_ONE: i32 = 1 << COVER_BITS;
+/// `log2(COVER_ONE)`.
+pub const COVER_BITS: u32 = 16;
