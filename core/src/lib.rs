@@ -61,8 +61,6 @@
 #![allow(clippy::needless_range_loop)]
 
 mod arith;
-pub mod style;
-mod units;
 pub mod band;
 pub mod edge;
 #[cfg(feature = "embedded-graphics")]
@@ -74,7 +72,9 @@ pub mod postfilter;
 pub mod raster;
 pub mod scene3d;
 pub mod shade;
+pub mod style;
 pub mod tone;
+mod units;
 
 pub use band::{Band, BandBuffer, BandError, Bands};
 pub use geom::{CoordError, SubPoint, COORD_LIMIT_PX, SUB_BITS, SUB_ONE};

@@ -295,7 +295,7 @@ mod tests {
     #[test]
     fn half_pixel_triangle() {
         let m = CoverageMap::new(&[(0, 0), (16, 0), (0, 16)], 2, 2);
-        assert_eq!(*m.at(0, 0), q(2048));
+        assert_eq!(*m.at(0, 0), q(32768));
         assert_eq!(*m.at(1, 0), q(0));
     }
 

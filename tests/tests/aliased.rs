@@ -13,7 +13,7 @@ use softedge_tests::shapes::{cross, star_polygon};
 
 const W: u16 = 24;
 const H: u16 = 24;
-const FULL: i32 = 4095 * 4096;
+const FULL: i32 = 4095 * 65536;
 
 /// A vertex: a pixel centre, a pixel corner, or anywhere (sub-pixels).
 fn vertex() -> impl Strategy<Value = (i64, i64)> {

@@ -184,7 +184,10 @@ fn exact_edge_area_within_documented_two_units() {
             orientation: 1,
         };
         let (err, at) = max_area_error(&c, &walk(&c, AreaMode::Exact, rows_of(&c)));
-        assert!(err < q(2), "edge {p0:?} -> {p1:?}: error {err} / 65536 px at {at:?}");
+        assert!(
+            err < q(2),
+            "edge {p0:?} -> {p1:?}: error {err} / 65536 px at {at:?}"
+        );
     }
 }
 
@@ -332,7 +335,8 @@ fn resumed_walk_equals_fresh_walks_and_the_whole_walk() {
             &(edge_case(), 1i32..9, -40i32..40, 1i32..60),
             |(c, band, col0, cols)| {
                 let full = rows_of(&c);
-                let columns = col0 + c.p0.0.min(c.p1.0) as i32 / 16..col0 + cols + c.p0.0 as i32 / 16;
+                let columns =
+                    col0 + c.p0.0.min(c.p1.0) as i32 / 16..col0 + cols + c.p0.0 as i32 / 16;
                 for mode in [AreaMode::Exact, AreaMode::SeedFormula] {
                     let Some(base) = walker(&c, mode, columns.clone()) else {
                         continue;

@@ -53,7 +53,7 @@ fn interior_pixels_equal_exact_plane_within_one_step() {
         let mut interior = 0;
         for y in 0..i32::from(H) {
             for x in 0..i32::from(W) {
-                if *cover.at(x, y) != q(4096) {
+                if *cover.at(x, y) != q(65536) {
                     continue;
                 }
                 interior += 1;

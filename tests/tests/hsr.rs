@@ -199,7 +199,7 @@ fn silhouette_over_a_farther_surface_is_exact_front_to_back() {
                 let m = CoverageMap::new(&v, i32::from(W), i32::from(H));
                 for j in 0..i32::from(H) {
                     for i in 0..i32::from(W) {
-                        let s = to_f64(m.at(i, j)) / 4096.0;
+                        let s = to_f64(m.at(i, j)) / 65536.0;
                         let want = s * f64::from(c) + (1.0 - s) * 1000.0;
                         let got = f64::from(f.lin_at(i, j)[0]);
                         // Coverage within 3/4096 px per edge (3 edges) of
@@ -351,7 +351,7 @@ fn layered_scenes_are_exact_where_one_edge_crosses_a_pixel() {
                 .collect();
             for j in 0..i32::from(h) {
                 for i in 0..i32::from(w) {
-                    let s: Vec<f64> = maps.iter().map(|m| to_f64(m.at(i, j)) / 4096.0).collect();
+                    let s: Vec<f64> = maps.iter().map(|m| to_f64(m.at(i, j)) / 65536.0).collect();
                     if s.iter().filter(|&&v| v > 0.0 && v < 1.0).count() > 1 {
                         continue;
                     }

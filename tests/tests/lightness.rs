@@ -506,10 +506,7 @@ fn rendered_scene_filtered_in_bands_with_halo_equals_the_full_frame() {
         }
     };
     let mut frame = Vec::new();
-    render(
-        Band::new(w, 0, h),
-        &mut frame,
-    );
+    render(Band::new(w, 0, h), &mut frame);
     let (full, stats) = filter_frame(&frame, usize::from(w), usize::from(h));
     println!(
         "rendered scene: {} pixels changed, {} clamped",
@@ -523,10 +520,7 @@ fn rendered_scene_filtered_in_bands_with_halo_equals_the_full_frame() {
         let mut out_row = vec![[0u16; 3]; usize::from(w)];
         for band in Bands::new(w, h, rows) {
             let mut input = Vec::new();
-            render(
-                Band::new(w, band.y0 - 1, band.rows + 2),
-                &mut input,
-            );
+            render(Band::new(w, band.y0 - 1, band.rows + 2), &mut input);
             filter
                 .filter_band(
                     band.y0,

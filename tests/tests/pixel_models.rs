@@ -9,7 +9,7 @@ use softedge::{
 
 const W: u16 = 40;
 const H: u16 = 40;
-const FULL: i64 = 4095 * 4096;
+const FULL: i64 = 4095 * 65536;
 
 const MODELS: [PixelModel; 9] = [
     PixelModel::Box,
@@ -684,7 +684,7 @@ fn one_sample_lands_on_each_pixel_with_its_footprint_weight() {
                 let got = f[(y * i32::from(W) + x) as usize];
                 assert_eq!(
                     got,
-                    4095 * w,
+                    4095 * w * 16,
                     "Hex19 sample {px4},{py4} on pixel ({x}, {y})"
                 );
             }
@@ -713,7 +713,11 @@ fn one_sample_lands_on_each_pixel_with_its_footprint_weight() {
                         0
                     };
                     let got = f[(y * i32::from(W) + x) as usize];
-                    assert_eq!(got, 4095 * w, "{filter:?} phase ({a}, {b}) on ({x}, {y})");
+                    assert_eq!(
+                        got,
+                        4095 * w * 16,
+                        "{filter:?} phase ({a}, {b}) on ({x}, {y})"
+                    );
                 }
             }
         }

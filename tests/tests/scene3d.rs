@@ -119,12 +119,7 @@ fn ref_project(cam: &Camera, w: u16, h: u16, p: [f64; 3]) -> ([f64; 2], f64) {
 fn render<const C: usize>(w: u16, h: u16, tris: &[ScreenTriangle<C>]) -> Vec<[i32; C]> {
     let mut acc = vec![0i32; BandBuffer::<C>::acc_len(w, h)];
     let mut cover = vec![0i32; BandBuffer::<C>::cover_len(w, h)];
-    let mut buf = BandBuffer::<C>::new(
-        &mut acc,
-        &mut cover,
-        Band::new(w, 0, h),
-    )
-    .unwrap();
+    let mut buf = BandBuffer::<C>::new(&mut acc, &mut cover, Band::new(w, 0, h)).unwrap();
     buf.clear([0; C]);
     for t in tris {
         t.draw(&mut buf, &RenderStyle::default()).unwrap();
@@ -140,7 +135,7 @@ fn render<const C: usize>(w: u16, h: u16, tris: &[ScreenTriangle<C>]) -> Vec<[i3
 
 /// Covered area in px^2 of a white object on black.
 fn area_px(pixels: &[[i32; 1]]) -> f64 {
-    pixels.iter().map(|p| f64::from(p[0])).sum::<f64>() / (4095.0 * 4096.0)
+    pixels.iter().map(|p| f64::from(p[0])).sum::<f64>() / (4095.0 * 65536.0)
 }
 
 fn mesh_of(shape: &Shape) -> (Vec<Vertex>, Vec<[u16; 3]>) {
@@ -625,12 +620,12 @@ fn flat_light_gives_every_visible_point_the_object_colour() {
     let px = render(64, 64, &tris);
     let full = px
         .iter()
-        .filter(|p| p[0] == 4095 * 4096)
+        .filter(|p| p[0] == 4095 * 65536)
         .collect::<Vec<_>>();
     assert!(full.len() > 100);
     assert!(full
         .iter()
-        .all(|p| **p == [4095 * 4096, 1234 * 4096, 7 * 4096]));
+        .all(|p| **p == [4095 * 65536, 1234 * 65536, 7 * 65536]));
 }
 
 /// One triangle facing the camera whose three vertices all carry normal `n`.

@@ -220,8 +220,8 @@ fn random_interpenetrating_scenes_match_the_point_sampled_reference() {
 }
 
 /// The exact value of a pixel: `sum(S_k * I_k) + (1 - sum(S_k)) * bg` for
-/// visible pieces `(coverage in 1/4096 px, triangle)`.
-/// A visible piece: coverage in 1/4096 px, vertices, colours.
+/// visible pieces `(coverage in 1/65536 px, triangle)`.
+/// A visible piece: coverage in 1/65536 px, vertices, colours.
 type Piece = (Q, [(i64, i64); 3], [i64; 3]);
 
 fn exact_pixel(pieces: &[Piece], bg: i64, i: i64, j: i64) -> f64 {
@@ -232,8 +232,8 @@ fn exact_pixel(pieces: &[Piece], bg: i64, i: i64, j: i64) -> f64 {
         e += *s * i_t;
         covered += *s;
     }
-    e += (q(4096) - covered) * q(bg);
-    (e / q(4096)).to_f64()
+    e += (q(65536) - covered) * q(bg);
+    (e / q(65536)).to_f64()
 }
 
 /// A Gouraud triangle in front of a Gouraud rectangle (two triangles split
@@ -401,7 +401,7 @@ fn mesh_at_one_depth_has_no_seam() {
                 let got = ours.lin_at(i, j)[0];
                 let d = (i32::from(got) - i32::from(engine.lin_at(i, j)[0])).abs();
                 worst_engine = worst_engine.max(d);
-                let s = exact.at(i, j).to_f64() / 4096.0;
+                let s = exact.at(i, j).to_f64() / 65536.0;
                 let want = s * f64::from(color) + (1.0 - s) * f64::from(bg);
                 let e = (f64::from(got) - want).abs();
                 worst_exact = worst_exact.max(e);
@@ -422,7 +422,7 @@ fn mesh_at_one_depth_has_no_seam() {
 #[test]
 fn empty_scene_is_the_background_exactly() {
     let (f, stats) = warnock_frame(17, 9, 4, 1234, &[]);
-    assert!(f.raw.iter().all(|p| p[0] == 1234 << 12));
+    assert!(f.raw.iter().all(|p| p[0] == 1234 << 16));
     assert_eq!(stats.by_area + stats.sampled + stats.peak_scratch as u32, 0);
 }
 
@@ -504,7 +504,7 @@ fn bad_input_gives_typed_errors_or_documented_results() {
     let mut scratch = vec![0u16; scratch_len(2)];
     let (r, raw) = one_band(16, 16, 0, &[ok, far], &mut scratch);
     assert!(matches!(r, Err(HsrError::Draw(DrawError::Coord(_)))));
-    assert!(raw.iter().all(|&v| v == 100 << 12));
+    assert!(raw.iter().all(|&v| v == 100 << 16));
     // Zero-area triangles (repeated or collinear vertices) are skipped.
     let flat = DepthTriangle::new([p(0, 0), p(100, 100), p(200, 200)], [[4000]; 3], [60000; 3]);
     let dot = DepthTriangle::new([p(5, 5); 3], [[4000]; 3], [60000; 3]);
@@ -563,7 +563,7 @@ fn bad_input_gives_typed_errors_or_documented_results() {
     for y0 in [-2048, -1, 0, 2040] {
         let (r, raw) = one_band(64, 8, y0, &huge, &mut s);
         assert!(r.is_ok(), "{r:?}");
-        assert!(raw.iter().all(|&v| (0..=4095 << 12).contains(&v)));
+        assert!(raw.iter().all(|&v| (0..=4095 << 16).contains(&v)));
     }
 }
 

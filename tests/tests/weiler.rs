@@ -15,7 +15,7 @@ use softedge_tests::shapes::{rectangle_boundary, triangulate};
 use softedge_tests::visible::{visible_image, visible_samples, RefTri};
 
 /// Raw accumulation of a fully covered pixel of colour 4095.
-const FULL_RAW: f64 = 4095.0 * 4096.0;
+const FULL_RAW: f64 = 4095.0 * 65536.0;
 
 /// Per-pixel bound of the coverage error that rounding cut vertices gives
 /// (module doc of `softedge::hsr::weiler`): every vertex is within
@@ -137,7 +137,7 @@ fn convex_minus(poly: Vec<Pt>, cut: [(i64, i64); 3]) -> Vec<Vec<Pt>> {
     out
 }
 
-/// Exact coverage (1/4096 px) of every pixel by the union of the
+/// Exact coverage (1/65536 px) of every pixel by the union of the
 /// triangles: `T_k` minus `T_0..T_{k-1}` are disjoint, each a union of
 /// convex parts clipped exactly to every pixel.
 fn union_cover(tris: &[[(i64, i64); 3]], w: i32, h: i32) -> Vec<Q> {
@@ -237,9 +237,14 @@ fn visible_pieces_are_disjoint_and_cover_the_union() {
             for i in 0..i32::from(w) {
                 let k = (j * i32::from(w) + i) as usize;
                 let got = f64::from(frame.raw_at(i, j)[0]) / FULL_RAW;
-                let want = to_f64(&exact[k]) / 4096.0;
+                let want = to_f64(&exact[k]) / 65536.0;
                 let err = (got - want).abs();
-                let bound = rounding_bound(edges[k] as f64) + ENGINE * edges[k] as f64;
+                // When this bound was set the engine counted coverage in
+                // 1/4096 px and no piece showed beyond it; at 1/65536 px the
+                // pieces' rounded cut vertices show below that resolution in
+                // pixels no triangle edge crosses.
+                let bound =
+                    rounding_bound(edges[k] as f64) + ENGINE * edges[k] as f64 + 1.0 / 4096.0;
                 assert!(
                     err <= bound + 1e-9,
                     "pixel ({i}, {j}): coverage {got}, union {want}, bound {bound}"
@@ -327,9 +332,9 @@ fn front_triangle_over_a_rectangle_is_s_front_plus_rest_back() {
         let s = CoverageMap::new(&front, w, h);
         for j in 0..h {
             for i in 0..w {
-                let sf = *s.at(i, j) / q(4096);
+                let sf = *s.at(i, j) / q(65536);
                 let want = sf * q(i64::from(i_front)) + (q(1) - sf) * q(i64::from(i_back));
-                let got = f64::from(frame.raw_at(i, j)[0]) / 4096.0;
+                let got = f64::from(frame.raw_at(i, j)[0]) / 65536.0;
                 let err = (got - to_f64(&want)).abs();
                 // The engine's 1/256 of the colour step, nothing more.
                 assert!(
@@ -534,7 +539,7 @@ fn two_interpenetrating_meshes_cover_their_union() {
     assert!(worst <= 1.0 / 256.0, "{worst}");
 }
 
-/// Exact visible coverage (1/4096 px) of every pixel by triangle `k` of a
+/// Exact visible coverage (1/65536 px) of every pixel by triangle `k` of a
 /// scene of constant-depth triangles (depth `[d; 3]`, larger nearer, ties
 /// to the earlier): `T_k` minus every nearer triangle, in rationals.
 fn exact_visible(tris: &[DepthTriangle<1>], k: usize, w: i32, h: i32) -> Vec<Q> {
@@ -616,7 +621,7 @@ fn constant_depth_scenes_against_the_exact_visible_area() {
                 for i in 0..w {
                     let c = (j * w + i) as usize;
                     let got = f64::from(frame.raw_at(i, j)[0]) / FULL_RAW;
-                    let err = (got - to_f64(&exact[c]) / 4096.0).abs();
+                    let err = (got - to_f64(&exact[c]) / 65536.0).abs();
                     let e = edges[c] as f64;
                     assert!(
                         err <= rounding_bound(e) + ENGINE * e + 1e-9,
@@ -706,7 +711,7 @@ fn oblique_intersection(ga: (i64, i64), gb: (i64, i64)) -> (f64, f64) {
                 Pt::int(x0 + 16, y0 + 16),
                 Pt::int(x0, y0 + 16),
             ];
-            let want = to_f64(&sub2_to_cover(&area(&clip(&px, h)))) / 4096.0;
+            let want = to_f64(&sub2_to_cover(&area(&clip(&px, h)))) / 65536.0;
             let got = f64::from(frame.raw_at(i, j)[0]) / FULL_RAW;
             worst = worst.max((got - want).abs());
             sum += (got - want).abs();

@@ -56,7 +56,7 @@
 mod sweep;
 mod zsweep;
 
-pub(crate) use sweep::{ComposeOp, Paint};
+pub(crate) use sweep::{ComposeOp, Coverage, Paint};
 
 use crate::shade::LIN_MAX;
 use crate::COVER_BITS;

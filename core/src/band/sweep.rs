@@ -18,10 +18,10 @@
 //! | add, plane | add | 1 multiply per channel |
 //! | attenuate | store 0 | 1 multiply per channel |
 //!
-//! The partial-pixel products use 12.4-bit intensities and 12-bit shares
-//! (`|diff| < 2^18`, `k <= 2^12`: inside `i32`), within 1/16 of a level of
-//! the exact `acc (1 - k) + I k`. The sweep clears what it reads, for the
-//! next shape.
+//! A partial pixel's product `v * k / 2^16` is two 32-bit multiplies (the
+//! operand split at bit 14, see [`mul_share`]), within one unit, 1/65536 of
+//! a level, of the exact `acc (1 - k) + I k`. The sweep clears what it
+//! reads, for the next shape.
 
 use super::{take_row, BandBuffer};
 use crate::shade::{Plane, PLANE_FRAC};
@@ -31,12 +31,12 @@ use crate::{COVER_BITS, COVER_ONE};
 // A plane's fine intensity is exactly an accumulator value: lin12 * 2^16.
 const _: () = assert!(PLANE_FRAC == COVER_BITS);
 
-/// Bits of the 12-bit share `k` used in partial-pixel products.
-const K_BITS: u32 = 12;
-/// The accumulator's bits below the 12.4 intensity used in products.
-const DROP: u32 = COVER_BITS - 4;
-/// Bound on a partial-pixel difference, so `diff * k` stays in `i32`.
-const DIFF_LIMIT: i32 = 1 << 18;
+/// Bits of an [`Opacity`].
+const ALPHA_BITS: u32 = 12;
+/// Where [`mul_share`] splits its operand.
+const LO_BITS: u32 = 14;
+/// Largest operand of [`mul_share`]: `|v| * 2^16 >> 14` stays below 2^31.
+const V_LIMIT: i32 = (1 << 29) - 1;
 
 /// What colour a shape's pixels get.
 #[derive(Debug, Clone, Copy)]
@@ -60,12 +60,25 @@ pub(crate) enum ComposeOp {
     Attenuate(Opacity),
 }
 
-/// The share of a pixel covered, by the fill rule, from its winding
-/// integral `c` (coverage units).
+/// How a pixel's winding integral becomes its share of a shape.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Coverage {
+    /// A simple outline of known orientation (`+1` or `-1`, the sign of
+    /// its area): the integral times it, unclamped, so that shapes sharing
+    /// an edge add up exactly (what `Blend::Add` needs); over clamps it to
+    /// `0..=1` px.
+    Signed(i32),
+    /// Any outline, by a fill rule.
+    Rule(FillRule),
+}
+
+/// The share of a pixel covered, from its winding integral `c` (coverage
+/// units).
 #[inline]
-fn share(c: i32, rule: FillRule) -> i32 {
-    match rule {
-        FillRule::NonZero => {
+fn share(c: i32, coverage: Coverage) -> i32 {
+    match coverage {
+        Coverage::Signed(o) => c.wrapping_mul(o),
+        Coverage::Rule(FillRule::NonZero) => {
             let a = c.unsigned_abs();
             if a >= COVER_ONE as u32 {
                 COVER_ONE
@@ -73,7 +86,7 @@ fn share(c: i32, rule: FillRule) -> i32 {
                 a as i32
             }
         }
-        FillRule::EvenOdd => {
+        Coverage::Rule(FillRule::EvenOdd) => {
             let m = c & (2 * COVER_ONE - 1);
             if m > COVER_ONE {
                 2 * COVER_ONE - m
@@ -82,12 +95,6 @@ fn share(c: i32, rule: FillRule) -> i32 {
             }
         }
     }
-}
-
-/// `s α` in 1/4096, rounded.
-#[inline]
-fn share12(s: i32, alpha: Opacity) -> i32 {
-    (s * i32::from(alpha.to_4096ths()) + (1 << (COVER_BITS - 1))) >> COVER_BITS
 }
 
 impl<const C: usize> BandBuffer<'_, C> {
@@ -99,7 +106,7 @@ impl<const C: usize> BandBuffer<'_, C> {
         &mut self,
         y_lo: i32,
         y_hi: i32,
-        rule: FillRule,
+        rule: Coverage,
         paint: &Paint<'_, C>,
         op: ComposeOp,
     ) {
@@ -153,27 +160,32 @@ fn run<const C: usize>(
     op: ComposeOp,
     bg: [u16; C],
 ) {
-    let alpha = match op {
-        ComposeOp::Over(a) | ComposeOp::Add(a) | ComposeOp::Attenuate(a) => a,
+    let (alpha, s) = match op {
+        ComposeOp::Add(a) => (a, s),
+        // A convex combination needs a share within the pixel.
+        ComposeOp::Over(a) | ComposeOp::Attenuate(a) => (a, s.clamp(0, COVER_ONE)),
     };
     let whole = s == COVER_ONE && alpha.is_opaque();
-    let k = share12(s, alpha);
-    if k == 0 && !whole {
+    // The share times the opacity, in coverage units (signed for add).
+    let k = if alpha.is_opaque() {
+        s
+    } else {
+        ((i64::from(s) * i64::from(alpha.to_4096ths())) >> ALPHA_BITS) as i32
+    };
+    if k == 0 {
         return;
     }
     match (op, paint) {
         (ComposeOp::Over(_), Paint::Flat(color)) => {
+            let f = color.map(|v| i32::from(v) << COVER_BITS);
             if whole {
-                let fill = color.map(|v| i32::from(v) << COVER_BITS);
                 for p in px.chunks_exact_mut(C) {
-                    p.copy_from_slice(&fill);
+                    p.copy_from_slice(&f);
                 }
             } else {
-                let f4 = color.map(|v| i32::from(v) << (COVER_BITS - DROP));
                 for p in px.chunks_exact_mut(C) {
                     for ch in 0..C {
-                        let d = (f4[ch] - (p[ch] >> DROP)).clamp(-DIFF_LIMIT, DIFF_LIMIT);
-                        p[ch] += d * k;
+                        p[ch] += mul_share(f[ch] - p[ch], k);
                     }
                 }
             }
@@ -185,22 +197,17 @@ fn run<const C: usize>(
                     if whole {
                         p[ch] = v[ch];
                     } else {
-                        let d = ((v[ch] >> DROP) - (p[ch] >> DROP)).clamp(-DIFF_LIMIT, DIFF_LIMIT);
-                        p[ch] += d * k;
+                        p[ch] += mul_share(v[ch] - p[ch], k);
                     }
                     v[ch] = v[ch].saturating_add(plane.gx[ch]);
                 }
             }
         }
         (ComposeOp::Add(_), Paint::Flat(color)) => {
+            // (I - bg) k exactly: below 2^12 * 2^16, one product per run.
             let mut add = [0i32; C];
             for ch in 0..C {
-                let dl = i32::from(color[ch]) - i32::from(bg[ch]);
-                add[ch] = if alpha.is_opaque() {
-                    dl * s
-                } else {
-                    (dl * k) << (COVER_BITS - K_BITS)
-                };
+                add[ch] = (i32::from(color[ch]) - i32::from(bg[ch])) * k;
             }
             for p in px.chunks_exact_mut(C) {
                 for ch in 0..C {
@@ -213,12 +220,8 @@ fn run<const C: usize>(
             let bgf = bg.map(|b| i32::from(b) << COVER_BITS);
             for p in px.chunks_exact_mut(C) {
                 for ch in 0..C {
-                    let rel = v[ch].saturating_sub(bgf[ch]);
-                    let add = if whole {
-                        rel
-                    } else {
-                        (rel >> DROP).clamp(-DIFF_LIMIT, DIFF_LIMIT) * k
-                    };
+                    let rel = v[ch] - bgf[ch];
+                    let add = if whole { rel } else { mul_share(rel, k) };
                     p[ch] = p[ch].saturating_add(add);
                     v[ch] = v[ch].saturating_add(plane.gx[ch]);
                 }
@@ -227,16 +230,33 @@ fn run<const C: usize>(
         (ComposeOp::Attenuate(_), _) => {
             for p in px.chunks_exact_mut(C) {
                 for ch in 0..C {
-                    if whole {
-                        p[ch] = 0;
+                    p[ch] = if whole {
+                        0
                     } else {
-                        let d = (p[ch] >> DROP).clamp(-DIFF_LIMIT, DIFF_LIMIT);
-                        p[ch] -= d * k;
-                    }
+                        p[ch] - mul_share(p[ch], k)
+                    };
                 }
             }
         }
     }
+}
+
+/// `floor(v * k / 2^16)` exactly, for a share `|k| <= 2^16`, in 32-bit
+/// multiplies:
+/// `v` is split at bit 14, so each product stays below `2^31` (`v` is
+/// limited to `±2^29` first, two full scales beyond any intensity).
+#[inline]
+fn mul_share(v: i32, k: i32) -> i32 {
+    if k == COVER_ONE {
+        return v;
+    }
+    let v = v.clamp(-V_LIMIT, V_LIMIT);
+    let (hi, lo) = (v >> LO_BITS, v & ((1 << LO_BITS) - 1));
+    // v k / 2^16 = (hi k) / 2^2 + (lo k) / 2^16: carry hi k's low bits
+    // into the second quotient so the result is the floor of the whole.
+    let (a, b) = (hi * k, lo * k);
+    const UP: u32 = COVER_BITS - LO_BITS;
+    (a >> UP) + ((((a & ((1 << UP) - 1)) << LO_BITS) + b) >> COVER_BITS)
 }
 
 /// The plane at frame pixel `(x, y)`, in accumulator units (span set-up:
@@ -255,13 +275,20 @@ mod tests {
     #[test]
     fn fill_rules_fold_the_winding_integral() {
         let one = COVER_ONE;
-        assert_eq!(share(one / 2, FillRule::NonZero), one / 2);
-        assert_eq!(share(-one / 2, FillRule::NonZero), one / 2);
-        assert_eq!(share(2 * one, FillRule::NonZero), one);
-        assert_eq!(share(2 * one, FillRule::EvenOdd), 0);
-        assert_eq!(share(3 * one / 2, FillRule::EvenOdd), one / 2);
-        assert_eq!(share(-one, FillRule::EvenOdd), one);
-        assert_eq!(share(-one / 4, FillRule::EvenOdd), one / 4);
+        let (nz, eo) = (
+            Coverage::Rule(FillRule::NonZero),
+            Coverage::Rule(FillRule::EvenOdd),
+        );
+        assert_eq!(share(one / 2, nz), one / 2);
+        assert_eq!(share(-one / 2, nz), one / 2);
+        assert_eq!(share(2 * one, nz), one);
+        assert_eq!(share(2 * one, eo), 0);
+        assert_eq!(share(3 * one / 2, eo), one / 2);
+        assert_eq!(share(-one, eo), one);
+        assert_eq!(share(-one / 4, eo), one / 4);
+        // Signed: linear, so that a seam's two sides add up exactly.
+        assert_eq!(share(-3, Coverage::Signed(1)), -3);
+        assert_eq!(share(-one - 3, Coverage::Signed(-1)), one + 3);
     }
 
     #[test]
@@ -277,5 +304,23 @@ mod tests {
             [0],
         );
         assert_eq!(px[0], 2000 << COVER_BITS);
+    }
+
+    #[test]
+    fn share_products_are_floors_of_the_exact_product() {
+        for v in [
+            -(1 << 29) + 1,
+            -123_456_789,
+            -1,
+            0,
+            1,
+            77_777,
+            (1 << 29) - 1,
+        ] {
+            for k in [1, 2, 4095, 32768, 65535, -65535, -3] {
+                let exact = (i64::from(v) * i64::from(k)).div_euclid(1 << 16);
+                assert_eq!(i64::from(mul_share(v, k)), exact, "{v} * {k}");
+            }
+        }
     }
 }

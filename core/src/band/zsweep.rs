@@ -57,7 +57,7 @@ impl<const C: usize> BandBuffer<'_, C> {
                 } else if c == 0 {
                     break;
                 }
-                // The winding integral's size, in the depth buffer's 1/4096 px.
+                // The winding integral's size, in the depth buffer's 1/32768 px.
                 let s_px = ((c.unsigned_abs() >> (COVER_BITS - FULL_BITS)) as i32).min(full);
                 if s_px > 0 {
                     let z = zplane.depth(zf);

@@ -259,8 +259,8 @@ mod tests {
     /// The exact spill of boundary `m`, from the definition, in `i128`.
     fn exact(u0: i64, v0: i64, du: i64, dv: i64, m: i32) -> (i64, i64, bool) {
         let n = 1i128 << FINE_BITS;
-        let t = i128::from(u0) * i128::from(dv)
-            + (i128::from(m) * n - i128::from(v0)) * i128::from(du);
+        let t =
+            i128::from(u0) * i128::from(dv) + (i128::from(m) * n - i128::from(v0)) * i128::from(du);
         let ndv = n * i128::from(dv);
         let col = t.div_euclid(ndv);
         let xi = t - col * ndv;

@@ -78,7 +78,6 @@ mod canon;
 mod crossing;
 mod walk;
 
-
 pub use aliased::AliasedWalk;
 pub use walk::EdgeWalk;
 

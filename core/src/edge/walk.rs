@@ -481,11 +481,9 @@ impl EdgeWalk {
         let prev = if a == self.a0 {
             self.b0
         } else {
-            (y0 - 1).max(self.b0).max(if self.e.mirrored {
-                self.b0
-            } else {
-                self.r_in
-            })
+            (y0 - 1)
+                .max(self.b0)
+                .max(if self.e.mirrored { self.b0 } else { self.r_in })
         };
         // The next crossing at or after column a.
         let x = if a > self.vb {

@@ -1023,7 +1023,9 @@ impl<const C: usize> Walk<'_, '_, '_, '_, C> {
                 }
             }
         }
-        // Each point is 1/16 of 1/256 px: one coverage unit.
+        // Each point is 1/16 of 1/256 px: 2^-12 of a pixel.
+        const POINT_BITS: u32 = 12;
+        let shift = PLANE_FRAC + POINT_BITS - COVER_BITS;
         let (i, j) = (w.x >> SUB_BITS, w.y >> SUB_BITS);
         let mut cell = [0i64; C];
         for n in 0..N {
@@ -1043,7 +1045,7 @@ impl<const C: usize> Walk<'_, '_, '_, '_, C> {
             if let Some(plane) = self.plane(idx) {
                 let at = plane.at(i, j);
                 for ch in 0..C {
-                    cell[ch] += (at[ch] * count) >> PLANE_FRAC;
+                    cell[ch] += (at[ch] * count) >> shift;
                 }
             }
         }

@@ -1139,7 +1139,13 @@ impl<const N: usize> VisibleSet<N> {
                 continue;
             };
             let add = crate::band::ComposeOp::Add(crate::style::Opacity::OPAQUE);
-            fill(band, piece.vertices(), &crate::band::Paint::Plane(&plane), add, style);
+            fill(
+                band,
+                piece.vertices(),
+                &crate::band::Paint::Plane(&plane),
+                add,
+                style,
+            );
         }
         Ok(())
     }

@@ -10,9 +10,9 @@ use crate::band::{Band, BandError, MAX_WIDTH};
 ///   library serves (a 240 px view across 4 units is 60 px per unit), so
 ///   two surfaces are ordered wrongly only where they are closer in depth
 ///   than that; 32-bit depth would double the RAM for no visible change.
-/// - `covered`: how much of the pixel surfaces already claim, in 1/4096 px
-///   (`FULL`): what lets anti-aliased edges meet the z-buffer (see
-///   [`hsr`](crate::hsr)). 13 bits are used; `u16` keeps it aligned.
+/// - `covered`: how much of the pixel surfaces already claim, in 1/32768 px
+///   (`FULL`, 1/32768 px): what lets anti-aliased edges meet the z-buffer
+///   (see [`hsr`](crate::hsr)).
 ///
 /// For 240x240 and 16-row bands that is `2 * 2 * 240 * 16` = 15 360 bytes
 /// next to the band's accumulator.
@@ -113,8 +113,9 @@ impl<'a> DepthBuffer<'a> {
     }
 }
 
-/// Full coverage as stored in [`DepthBuffer`]: 12 bits of a pixel (the
-/// band's coverage, 1/65536 px, rounded down to 1/4096 px).
+/// Full coverage as stored in [`DepthBuffer`]: 1/32768 px (the band's
+/// coverage, 1/65536 px, with its last bit dropped, so that a whole pixel
+/// fits a `u16`).
 pub(crate) const FULL: u16 = 1 << FULL_BITS;
 /// `log2(FULL)`.
-pub(crate) const FULL_BITS: u32 = 12;
+pub(crate) const FULL_BITS: u32 = 15;

@@ -2,14 +2,16 @@
 //! the pixels' tent weights (see the module docs). Per sample row: table
 //! look-ups and additions.
 
+use super::ModelCover;
 use core::ops::Range;
 
+use super::walk_samples;
+use super::MODEL_ONE as COVER_ONE;
 use super::{tent_sum, tent_weight};
 use crate::arith::{div_ceil, div_floor};
 use crate::band::BandBuffer;
-use super::walk_samples;
 use crate::edge::CoverSink;
-use crate::{SubPoint, COVER_ONE};
+use crate::SubPoint;
 
 /// `CUM[t] = sum of w_k for k in t..2n`: the weight of the samples right of
 /// a cut `t` samples into a base (`t = 0`: all, `t = 2n`: none).
@@ -82,7 +84,7 @@ impl<const C: usize> CoverSink for Distribute<'_, '_, C> {
             let unit = i64::from(sign) * i64::from(tent_weight(self.n, k as usize)) * per_weight;
             // Pixels whose base lies wholly right of c: full horizontal weight.
             let p_full = div_ceil(c + half, n);
-            self.band.add_cover(
+            self.band.add_model_cover(
                 p_full as i32,
                 j as i32,
                 (unit * i64::from(tent_sum(self.n))) as i32,
@@ -92,8 +94,8 @@ impl<const C: usize> CoverSink for Distribute<'_, '_, C> {
                 let t = c - (n * p - half);
                 if t > 0 && t < 2 * n {
                     let v = (unit * i64::from(cum.get(t as usize).copied().unwrap_or(0))) as i32;
-                    self.band.add_cover(p as i32, j as i32, v);
-                    self.band.add_cover(p as i32 + 1, j as i32, -v);
+                    self.band.add_model_cover(p as i32, j as i32, v);
+                    self.band.add_model_cover(p as i32 + 1, j as i32, -v);
                 }
             }
         }

@@ -32,7 +32,7 @@
 //! phase, the formula's values at the slots are scaled to add to
 //! [`CIRCULAR_PHASE_TOTAL`] = 16 and rounded by largest remainder, so each
 //! phase adds to 16 exactly and a pixel's 256 phases to 4096 =
-//! [`COVER_ONE`](crate::COVER_ONE). The per-phase scaling is the smallest
+//! [`MODEL_ONE`]. The per-phase scaling is the smallest
 //! change that makes the formula equal energy; the rounding is within one
 //! unit, `1/4096` of a pixel, per sample. Measured against the continuous
 //! filter (tests): a pixel's coverage by a half-plane is within 0.47 %
@@ -56,8 +56,8 @@
 use core::ops::Range;
 
 use super::splat::{splat_row, RowFootprint};
-use crate::band::BandBuffer;
 use super::walk_samples;
+use crate::band::BandBuffer;
 use crate::edge::CoverSink;
 use crate::SubPoint;
 
@@ -68,7 +68,7 @@ const CIRCULAR_SHIFT: u32 = crate::SUB_BITS;
 /// Weight units every sample position distributes in all (its phase's
 /// total): `COVER_ONE / CIRCULAR_SAMPLES^2`.
 pub const CIRCULAR_PHASE_TOTAL: u32 =
-    (crate::COVER_ONE as u32) / (CIRCULAR_SAMPLES * CIRCULAR_SAMPLES) as u32;
+    (super::MODEL_ONE as u32) / (CIRCULAR_SAMPLES * CIRCULAR_SAMPLES) as u32;
 /// Widest footprint in samples (`m = 3`).
 const MAX_SPAN: usize = 3 * CIRCULAR_SAMPLES;
 

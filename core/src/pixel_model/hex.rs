@@ -28,6 +28,7 @@
 //! `splat_row` (shifts, table look-ups and adds). Why its weights differ
 //! from the seed's: see [`pixel_model`](crate::pixel_model).
 
+use super::ModelCover;
 use core::ops::Range;
 
 /// The seed-003 evaluation function at the seven points of a pixel, for an
@@ -56,11 +57,12 @@ pub fn hex7_offsets(dx: i64, dy: i64) -> [i64; 7] {
 }
 
 use super::splat::{splat_row, suffix_sums, RowFootprint};
+use super::walk_samples;
+use super::MODEL_ONE as COVER_ONE;
 use crate::arith::div_ceil;
 use crate::band::BandBuffer;
-use super::walk_samples;
 use crate::edge::CoverSink;
-use crate::{SubPoint, COVER_ONE, SUB_ONE};
+use crate::{SubPoint, SUB_ONE};
 
 /// Sum of a pixel's point weights: 2 + 6 * 1.
 const TOTAL: i32 = 8;
@@ -92,12 +94,7 @@ pub(crate) fn walk_hex7<const C: usize>(
             row_a,
             rows: rows.clone(),
         };
-        walk_samples(
-            fine(p0, dx),
-            fine(p1, dx),
-            fine_rows.clone(),
-            &mut sink,
-        );
+        walk_samples(fine(p0, dx), fine(p1, dx), fine_rows.clone(), &mut sink);
     }
 }
 
@@ -117,12 +114,12 @@ impl<const C: usize> HexRows<'_, '_, C> {
             return;
         }
         let p_full = div_ceil(c, 2);
-        self.band.add_cover(p_full as i32, j, unit * full);
+        self.band.add_model_cover(p_full as i32, j, unit * full);
         for &(p_off, w) in partial {
             let p = (p_full - p_off) as i32;
             let v = unit * w;
-            self.band.add_cover(p, j, v);
-            self.band.add_cover(p + 1, j, -v);
+            self.band.add_model_cover(p, j, v);
+            self.band.add_model_cover(p + 1, j, -v);
         }
     }
 }
@@ -162,7 +159,7 @@ impl<const C: usize> CoverSink for HexRows<'_, '_, C> {
 // ---------------------------------------------------------------------------
 // The 19-point hexagonal pixel.
 
-/// Weight units of a Hex19 pixel: its 19 weights add to [`COVER_ONE`].
+/// Weight units of a Hex19 pixel: its 19 weights add to `MODEL_ONE`.
 const HEX19_TOTAL: i32 = COVER_ONE;
 /// Each of the lattice's 4 point classes carries a quarter of it.
 const HEX19_CLASS: i32 = HEX19_TOTAL / 4;
@@ -285,12 +282,7 @@ pub(crate) fn walk_hex19<const C: usize>(
             row_a,
             rows: rows.clone(),
         };
-        walk_samples(
-            fine(p0, dx),
-            fine(p1, dx),
-            fine_rows.clone(),
-            &mut sink,
-        );
+        walk_samples(fine(p0, dx), fine(p1, dx), fine_rows.clone(), &mut sink);
     }
 }
 

@@ -162,6 +162,25 @@ mod tests {
     }
 }
 
+/// The unit of the models' weights: 4096 per pixel. Their tables
+/// ([`HEX19_POINTS`], the circular filters') are published in it; the
+/// band's scratch counts 16 times finer ([`COVER_ONE`](crate::COVER_ONE)),
+/// so a weight is scaled by a shift when it is recorded.
+pub const MODEL_ONE: i32 = 1 << 12;
+
+/// Records a model's cover change (in [`MODEL_ONE`] units) in the band.
+trait ModelCover {
+    fn add_model_cover(&mut self, x: i32, y: i32, delta: i32);
+}
+
+impl<const C: usize> ModelCover for crate::band::BandBuffer<'_, C> {
+    #[inline]
+    fn add_model_cover(&mut self, x: i32, y: i32, delta: i32) {
+        const SHIFT: u32 = crate::COVER_BITS - 12;
+        self.add_cover(x, y, delta << SHIFT);
+    }
+}
+
 /// The aliased walk of an edge given on a sample grid: `p0`, `p1` in 1/16
 /// of a sample (a [`SubPoint`](crate::SubPoint) scaled by the samples per
 /// pixel), rows in samples. Sample centres on a shared edge go to exactly

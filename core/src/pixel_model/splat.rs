@@ -16,6 +16,7 @@
 //! two) and at most `1 + ceil(L / n)` table look-ups and cover adds.
 //! Values stay within `±2 cum[0] <= ±2 COVER_ONE`: nothing overflows.
 
+use super::ModelCover;
 use core::ops::Range;
 
 use crate::band::BandBuffer;
@@ -67,12 +68,12 @@ pub(super) fn splat_row<const C: usize>(
             0
         };
         if v != prev {
-            band.add_cover(p as i32, j, v - prev);
+            band.add_model_cover(p as i32, j, v - prev);
             prev = v;
         }
     }
     if sign * total != prev {
-        band.add_cover(p_full as i32, j, sign * total - prev);
+        band.add_model_cover(p_full as i32, j, sign * total - prev);
     }
 }
 

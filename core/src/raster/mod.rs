@@ -29,12 +29,12 @@
 
 pub(crate) mod simple;
 
-use crate::band::{BandBuffer, ComposeOp, Paint};
+use crate::band::{BandBuffer, ComposeOp, Coverage, Paint};
 use crate::edge::{AliasedWalk, AreaMode, EdgeWalk};
-use crate::geom::{CoordError, FinePoint, SubPoint};
+use crate::geom::{area2, CoordError, FinePoint, SubPoint};
 use crate::pixel_model::{walk_bed_of_nails, walk_circular, walk_hex19, walk_hex7, CircularFilter};
 use crate::shade::Plane;
-use crate::style::{FillRule, Opacity};
+use crate::style::Opacity;
 use crate::SUB_BITS;
 
 /// Most vertices a [`Polygon`] may have.
@@ -174,7 +174,13 @@ impl<const C: usize> Triangle<C> {
         } else {
             Paint::Plane(&plane)
         };
-        fill(band, &self.vertices, &paint, ComposeOp::Add(Opacity::OPAQUE), style);
+        fill(
+            band,
+            &self.vertices,
+            &paint,
+            ComposeOp::Add(Opacity::OPAQUE),
+            style,
+        );
         Ok(())
     }
 }
@@ -476,9 +482,10 @@ impl<const C: usize> Line<C> {
     }
 }
 
-/// Walks every edge of a closed outline into the band's scratch, then
-/// composes it once with `paint`. The outline is filled by the nonzero
-/// rule, so either orientation gives the same pixels.
+/// Walks every edge of a simple closed outline into the band's scratch,
+/// then composes it once with `paint`. Its coverage is the winding integral
+/// times the outline's orientation, so either orientation gives the same
+/// pixels, and outlines sharing an edge add up exactly.
 #[inline(never)] // kept out of line so profiles can name it
 pub(crate) fn fill<const C: usize>(
     band: &mut BandBuffer<'_, C>,
@@ -488,7 +495,16 @@ pub(crate) fn fill<const C: usize>(
     style: &RenderStyle,
 ) {
     if let Some(rows) = walk_outline(band, v, style) {
-        band.compose(rows.start, rows.end, FillRule::NonZero, paint, op);
+        // A clockwise outline (positive area, y down) has its inside left
+        // of its downward edges: its winding integral is -coverage.
+        let orientation = if area2(v) > 0 { -1 } else { 1 };
+        band.compose(
+            rows.start,
+            rows.end,
+            Coverage::Signed(orientation),
+            paint,
+            op,
+        );
     }
 }
 

@@ -10,7 +10,8 @@
 
 use std::process::Command;
 
-use softedge::edge::{walk_edge, AreaMode, EdgeSink, Plane};
+use softedge::edge::{AreaMode, CoverSink, EdgeWalk};
+use softedge::geom::FinePoint;
 use softedge::{BandBuffer, Bands, Line, RenderStyle, SubPoint, Triangle};
 
 const W: u16 = 240;
@@ -322,8 +323,8 @@ fn render_frame<const C: usize>(fill: bool) -> u64 {
 /// visits for the scene (what the instruction totals are divided by).
 fn counts<const C: usize>() -> (u64, u64) {
     struct Count(u64);
-    impl<const C: usize> EdgeSink<C> for Count {
-        fn cell(&mut self, _: i32, _: i32, _: i32, _: &[i32; C]) {
+    impl CoverSink for Count {
+        fn cell(&mut self, _: i32, _: i32, _: i32) {
             self.0 += 1;
         }
         fn cover(&mut self, _: i32, _: i32, _: i32) {}
@@ -343,21 +344,15 @@ fn counts<const C: usize>() -> (u64, u64) {
             SubPoint::new(l.from.x - nx, l.from.y - ny),
         ]);
     }
-    let plane = Plane::<C>::flat([4095; C], [0; C]);
     let (mut cells, mut swept) = (Count(0), 0u64);
     for v in &outlines {
         for band in Bands::new(W, H, BAND_ROWS) {
             let rows = band.y0..band.y0 + i32::from(band.rows);
             for k in 0..v.len() {
-                walk_edge(
-                    v[k],
-                    v[(k + 1) % v.len()],
-                    1,
-                    &plane,
-                    AreaMode::Exact,
-                    rows.clone(),
-                    &mut cells,
-                );
+                let (p0, p1) = (FinePoint::from(v[k]), FinePoint::from(v[(k + 1) % v.len()]));
+                if let Some(mut w) = EdgeWalk::new(p0, p1, AreaMode::Exact, 0..i32::from(W)) {
+                    w.walk(rows.clone(), &mut cells);
+                }
             }
         }
         let (x0, x1) = (
@@ -446,7 +441,7 @@ fn main() {
         };
         let run = |scene, t| callgrind(channels, scene, t);
         let results = [
-            run("mesh", Some("*walk_edge*")),
+            run("mesh", Some("*EdgeWalk*walk*")),
             run("mesh", Some("*render_frame*")),
             run("fill", Some("*sweep*")),
             run("fill", Some("*render_frame*")),
@@ -483,7 +478,7 @@ fn main() {
     let torus = [
         callgrind("3", "torus", Some("*render_torus*")),
         callgrind("3", "torus", Some("*scene3d*project*")),
-        callgrind("3", "torus", Some("*walk_edge*")),
+        callgrind("3", "torus", Some("*EdgeWalk*walk*")),
         callgrind("3", "torus", Some("*raster*fill*")),
     ];
     let mut n = [0u64; 4];
