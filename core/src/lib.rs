@@ -62,6 +62,7 @@
 
 mod arith;
 pub mod band;
+pub mod canvas;
 pub mod edge;
 #[cfg(feature = "embedded-graphics")]
 pub mod eg;
@@ -70,6 +71,8 @@ pub mod hsr;
 pub mod pixel_model;
 pub mod postfilter;
 pub mod raster;
+#[cfg(feature = "embedded-graphics")]
+pub mod render;
 pub mod scene3d;
 pub mod shade;
 pub mod style;

@@ -64,6 +64,11 @@ use crate::COVER_BITS;
 /// Largest band width and frame height handled, in pixels.
 pub const MAX_WIDTH: u16 = 2048;
 
+/// Per row of the scratch, after its `width` cover changes: their extent
+/// (`lo`, `hi`) and the extent of the row's drawn pixels (`dirty_lo`,
+/// `dirty_hi`, half-open).
+const ROW_EXTRA: usize = 4;
+
 /// One band: the frame rows `[y0, y0 + rows)`, columns `[x0, x0 + width)`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -195,16 +200,26 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         width as usize * rows as usize * C
     }
 
-    /// `i32`s needed for the `cover` scratch: one per pixel, and two per
-    /// row for the extent of the row's cover changes (so the sweep visits
-    /// only the columns between a shape's edges).
+    /// `i32`s needed for the `cover` scratch: one per pixel, and four per
+    /// row: the extent of the row's cover changes (so the sweep visits
+    /// only the columns between a shape's edges) and the extent of what the
+    /// row holds besides the background (so the rest is sent without being
+    /// resolved).
     pub const fn cover_len(width: u16, rows: u16) -> usize {
-        (width as usize + 2) * rows as usize
+        (width as usize + ROW_EXTRA) * rows as usize
     }
 
     /// A buffer for `band` over `acc` and `cover` (longer slices are fine).
     /// Call [`clear`](Self::clear) before drawing.
     pub fn new(acc: &'a mut [i32], cover: &'a mut [i32], band: Band) -> Result<Self, BandError> {
+        let mut buf = Self::new_unreset(acc, cover, band)?;
+        for r in 0..band.rows {
+            buf.reset_row(usize::from(r));
+        }
+        Ok(buf)
+    }
+
+    fn new_unreset(acc: &'a mut [i32], cover: &'a mut [i32], band: Band) -> Result<Self, BandError> {
         let limit = crate::geom::COORD_LIMIT_PX as u32;
         let y_ok = band.y0.unsigned_abs() <= limit && band.x0.unsigned_abs() <= limit;
         if band.width == 0 || band.rows == 0 || band.width > MAX_WIDTH || !y_ok || C == 0 {
@@ -216,16 +231,12 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         if cover.len() < Self::cover_len(band.width, band.rows) {
             return Err(BandError::CoverTooSmall);
         }
-        let mut buf = Self {
+        Ok(Self {
             acc,
             cover,
             band,
             background: [0; C],
-        };
-        for r in 0..band.rows {
-            buf.reset_row(usize::from(r));
-        }
-        Ok(buf)
+        })
     }
 
     /// The band this buffer holds.
@@ -251,6 +262,13 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         let fill = bg.map(|b| i32::from(b) << COVER_BITS);
         for px in acc.chunks_exact_mut(C) {
             px.copy_from_slice(&fill);
+        }
+        let w = usize::from(self.band.width);
+        for r in 0..usize::from(self.band.rows) {
+            let at = r * (w + ROW_EXTRA) + w + 2;
+            if let Some([dlo, dhi]) = self.cover.get_mut(at..at + 2) {
+                (*dlo, *dhi) = (0, 0);
+            }
         }
     }
 
@@ -327,6 +345,9 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
                     *a = a.saturating_add(v);
                 }
             }
+            let w = usize::from(self.band.width);
+            let (r, c) = ((k / C) / w, (k / C) % w);
+            self.mark(r, c, c + 1);
         }
     }
 
@@ -344,15 +365,13 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         }
         let c = c.max(0) as usize;
         let w = w as usize;
-        let start = r as usize * (w + 2);
-        if let Some(row) = self.cover.get_mut(start..start + w + 2) {
-            if let [deltas @ .., lo, hi] = row {
-                if let Some(d) = deltas.get_mut(c) {
-                    *d = d.wrapping_add(delta);
-                }
-                *lo = (*lo).min(c as i32);
-                *hi = (*hi).max(c as i32);
+        let start = r as usize * (w + ROW_EXTRA);
+        if let Some([deltas @ .., lo, hi, _, _]) = self.cover.get_mut(start..start + w + ROW_EXTRA) {
+            if let Some(d) = deltas.get_mut(c) {
+                *d = d.wrapping_add(delta);
             }
+            *lo = (*lo).min(c as i32);
+            *hi = (*hi).max(c as i32);
         }
     }
 
@@ -368,25 +387,88 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         self.add_cover(x.saturating_add(1), y, area.wrapping_neg());
     }
 
-    /// Empties row `r` of the cover scratch's extent (the deltas are
-    /// cleared by the sweep as it reads them).
+    /// Empties row `r` of the cover scratch and its extents.
     fn reset_row(&mut self, r: usize) {
         let w = usize::from(self.band.width);
-        let start = r * (w + 2);
-        if let Some(row) = self.cover.get_mut(start..start + w + 2) {
-            if let [deltas @ .., lo, hi] = row {
-                deltas.iter_mut().for_each(|c| *c = 0);
+        let start = r * (w + ROW_EXTRA);
+        if let Some([deltas @ .., lo, hi, dlo, dhi]) = self.cover.get_mut(start..start + w + ROW_EXTRA) {
+            deltas.iter_mut().for_each(|c| *c = 0);
+            *lo = i32::MAX;
+            *hi = i32::MIN;
+            (*dlo, *dhi) = (0, 0);
+        }
+    }
+
+    /// A buffer for the next band of a frame over the storage the previous
+    /// band of the same width used, whose scratch every sweep left empty:
+    /// only the extents are reset (not every pixel), and the accumulator is
+    /// taken to hold `background` already (the previous band's flush reset
+    /// it). For the renderer, which knows both.
+    pub(crate) fn reuse(
+        acc: &'a mut [i32],
+        cover: &'a mut [i32],
+        band: Band,
+        background: [u16; C],
+    ) -> Result<Self, BandError> {
+        let mut buf = Self::new_unreset(acc, cover, band)?;
+        buf.background = background.map(|v| v.min(LIN_MAX));
+        let w = usize::from(band.width);
+        for r in 0..usize::from(band.rows) {
+            let start = r * (w + ROW_EXTRA) + w;
+            if let Some([lo, hi, dlo, dhi]) = buf.cover.get_mut(start..start + ROW_EXTRA) {
                 *lo = i32::MAX;
                 *hi = i32::MIN;
+                (*dlo, *dhi) = (0, 0);
+            }
+        }
+        Ok(buf)
+    }
+
+    /// Marks columns `lo..hi` (band-relative) of row `r` as drawn.
+    #[inline]
+    fn mark(&mut self, r: usize, lo: usize, hi: usize) {
+        let w = usize::from(self.band.width);
+        let at = r * (w + ROW_EXTRA) + w + 2;
+        if let Some([dlo, dhi]) = self.cover.get_mut(at..at + 2) {
+            let (lo, hi) = (lo as i32, hi as i32);
+            if *dlo >= *dhi {
+                (*dlo, *dhi) = (lo, hi);
+            } else {
+                *dlo = (*dlo).min(lo);
+                *dhi = (*dhi).max(hi);
             }
         }
     }
 
-    /// Empties the whole scratch (a walk that was not swept).
-    pub(crate) fn reset_scratch(&mut self) {
-        for r in 0..self.band.rows {
-            self.reset_row(usize::from(r));
+    /// The drawn columns of band row `r`, forgotten (the row is about to be
+    /// sent and reset).
+    pub(crate) fn take_dirty(&mut self, r: u16) -> core::ops::Range<u16> {
+        let w = usize::from(self.band.width);
+        let at = usize::from(r) * (w + ROW_EXTRA) + w + 2;
+        match self.cover.get_mut(at..at + 2) {
+            Some([dlo, dhi]) => {
+                let out = (*dlo).clamp(0, w as i32) as u16..(*dhi).clamp(0, w as i32) as u16;
+                (*dlo, *dhi) = (0, 0);
+                out
+            }
+            _ => 0..0,
         }
+    }
+
+    /// The linear value of band pixel `(k, r)` (band-relative), its
+    /// accumulator reset to the background.
+    #[inline]
+    pub(crate) fn take_pixel(&mut self, r: u16, k: u16) -> [u16; C] {
+        let w = usize::from(self.band.width);
+        let i = (usize::from(r) * w + usize::from(k)) * C;
+        let mut out = [0u16; C];
+        if let Some(px) = self.acc.get_mut(i..i + C) {
+            for ((o, a), b) in out.iter_mut().zip(px.iter_mut()).zip(self.background) {
+                *o = resolve(*a);
+                *a = i32::from(b) << COVER_BITS;
+            }
+        }
+        out
     }
 
     /// The frame rows `y_lo..y_hi` clipped to the band (for the sweeps).
@@ -408,33 +490,62 @@ impl<const C: usize> crate::edge::CoverSink for BandBuffer<'_, C> {
     }
 }
 
-/// Row `r` of the cover scratch for a sweep: its cover changes and their
-/// column extent `lo..=hi`, the extent reset for the next shape (the sweep
-/// clears the changes as it reads them). `None` when the row has no
-/// changes. Events were clamped into the band at insertion, so
-/// `0 <= lo <= hi < w`.
-fn take_row(cover: &mut [i32], r: usize, w: usize) -> Option<(&mut [i32], usize, usize)> {
-    let start = r * (w + 2);
-    let row = cover.get_mut(start..start + w + 2)?;
+/// Row `r` of the cover scratch for a sweep: its cover changes, their
+/// column extent `lo..=hi` (reset for the next shape: the sweep clears the
+/// changes as it reads them) and the row's drawn extent to widen. `None`
+/// when the row has no changes. Events were clamped into the band at
+/// insertion, so `0 <= lo <= hi < w`.
+fn take_row(cover: &mut [i32], r: usize, w: usize) -> Option<SweepRow<'_>> {
+    let start = r * (w + ROW_EXTRA);
+    let row = cover.get_mut(start..start + w + ROW_EXTRA)?;
     let (deltas, ext) = row.split_at_mut(w);
-    let (lo, hi) = match ext {
-        [lo, hi] => (
-            core::mem::replace(lo, i32::MAX),
-            core::mem::replace(hi, i32::MIN),
-        ),
-        _ => return None,
+    let [lo, hi, dlo, dhi] = ext else {
+        return None;
     };
-    if lo > hi {
+    let (l, h) = (
+        core::mem::replace(lo, i32::MAX),
+        core::mem::replace(hi, i32::MIN),
+    );
+    if l > h {
         return None;
     }
-    let (lo, hi) = (lo.max(0) as usize, (hi.max(0) as usize).min(w - 1));
-    Some((deltas, lo, hi))
+    Some(SweepRow {
+        deltas,
+        lo: l.max(0) as usize,
+        hi: (h.max(0) as usize).min(w - 1),
+        drawn: (dlo, dhi),
+    })
+}
+
+/// One row of the scratch, taken for a sweep.
+struct SweepRow<'r> {
+    deltas: &'r mut [i32],
+    lo: usize,
+    hi: usize,
+    drawn: (&'r mut i32, &'r mut i32),
+}
+
+impl SweepRow<'_> {
+    /// Widens the row's drawn extent by columns `lo..hi`.
+    fn mark(&mut self, lo: usize, hi: usize) {
+        let (dlo, dhi) = (&mut *self.drawn.0, &mut *self.drawn.1);
+        let (lo, hi) = (lo as i32, hi as i32);
+        if lo >= hi {
+            return;
+        }
+        if *dlo >= *dhi {
+            (*dlo, *dhi) = (lo, hi);
+        } else {
+            *dlo = (*dlo).min(lo);
+            *dhi = (*dhi).max(hi);
+        }
+    }
 }
 
 /// Rounds an accumulated value to linear 12 bits: the pipeline's one
 /// rounding.
 #[inline]
-fn resolve(acc: i32) -> u16 {
+pub(crate) fn resolve(acc: i32) -> u16 {
     let v = ((acc >> (COVER_BITS - 1)) + 1) >> 1;
     v.clamp(0, i32::from(LIN_MAX)) as u16
 }
@@ -458,7 +569,7 @@ mod tests {
     #[test]
     fn short_buffers_and_bad_bands_are_errors() {
         let mut acc = [0i32; 8];
-        let mut cov = [0i32; 12];
+        let mut cov = [0i32; 16];
         let band = Band::new(4, 0, 2);
         assert!(BandBuffer::<1>::new(&mut acc, &mut cov, band).is_ok());
         assert_eq!(
@@ -478,7 +589,7 @@ mod tests {
     #[test]
     fn out_of_band_reads_and_writes_are_dropped() {
         let mut acc = [0i32; 8];
-        let mut cov = [0i32; 12];
+        let mut cov = [0i32; 16];
         let mut b = BandBuffer::<1>::new(&mut acc, &mut cov, Band::new(4, 10, 2)).unwrap();
         b.clear([100]);
         assert_eq!(b.lin12(0, 10), Some([100]));
@@ -495,7 +606,7 @@ mod tests {
     #[test]
     fn windowed_band_addresses_frame_columns() {
         let mut acc = [0i32; 4];
-        let mut cov = [0i32; 6];
+        let mut cov = [0i32; 8];
         let band = Band {
             width: 4,
             y0: 3,

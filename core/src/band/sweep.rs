@@ -58,6 +58,8 @@ pub(crate) enum ComposeOp {
     /// `acc = acc (1 - s α)`: the first half of an over whose colour is
     /// then added plane by plane (a Gouraud mesh composed as one shape).
     Attenuate(Opacity),
+    /// `acc += I s α`: the second half.
+    Accumulate(Opacity),
 }
 
 /// How a pixel's winding integral becomes its share of a shape.
@@ -115,15 +117,18 @@ impl<const C: usize> BandBuffer<'_, C> {
         let bg = self.background;
         for y in self.rows_in_band(y_lo, y_hi) {
             let r = (y - self.band.y0) as usize;
-            let Some((deltas, lo, hi)) = take_row(self.cover, r, w) else {
+            let Some(mut row) = take_row(self.cover, r, w) else {
                 continue;
             };
+            let (lo, hi) = (row.lo, row.hi);
+            let deltas = &mut *row.deltas;
             let Some(row_acc) = self.acc.get_mut(r * w * C..(r + 1) * w * C) else {
                 deltas.iter_mut().for_each(|d| *d = 0);
                 continue;
             };
             let mut c: i32 = 0;
             let mut x = lo;
+            let mut drawn = (usize::MAX, 0);
             while x <= hi {
                 if let Some(d) = deltas.get_mut(x) {
                     c = c.wrapping_add(core::mem::take(d));
@@ -140,10 +145,12 @@ impl<const C: usize> BandBuffer<'_, C> {
                     if let Some(px) = row_acc.get_mut(x * C..end * C) {
                         let fx = x0.saturating_add(x as i32);
                         run(px, s, fx, y, paint, op, bg);
+                        drawn = (drawn.0.min(x), drawn.1.max(end));
                     }
                 }
                 x = next;
             }
+            row.mark(drawn.0, drawn.1);
         }
     }
 }
@@ -161,7 +168,7 @@ fn run<const C: usize>(
     bg: [u16; C],
 ) {
     let (alpha, s) = match op {
-        ComposeOp::Add(a) => (a, s),
+        ComposeOp::Add(a) | ComposeOp::Accumulate(a) => (a, s),
         // A convex combination needs a share within the pixel.
         ComposeOp::Over(a) | ComposeOp::Attenuate(a) => (a, s.clamp(0, COVER_ONE)),
     };
@@ -203,11 +210,12 @@ fn run<const C: usize>(
                 }
             }
         }
-        (ComposeOp::Add(_), Paint::Flat(color)) => {
+        (ComposeOp::Add(_) | ComposeOp::Accumulate(_), Paint::Flat(color)) => {
             // (I - bg) k exactly: below 2^12 * 2^16, one product per run.
+            let base = if matches!(op, ComposeOp::Add(_)) { bg } else { [0; C] };
             let mut add = [0i32; C];
             for ch in 0..C {
-                add[ch] = (i32::from(color[ch]) - i32::from(bg[ch])) * k;
+                add[ch] = (i32::from(color[ch]) - i32::from(base[ch])) * k;
             }
             for p in px.chunks_exact_mut(C) {
                 for ch in 0..C {
@@ -215,9 +223,10 @@ fn run<const C: usize>(
                 }
             }
         }
-        (ComposeOp::Add(_), Paint::Plane(plane)) => {
+        (ComposeOp::Add(_) | ComposeOp::Accumulate(_), Paint::Plane(plane)) => {
             let mut v = plane_at(plane, x, y);
-            let bgf = bg.map(|b| i32::from(b) << COVER_BITS);
+            let base = if matches!(op, ComposeOp::Add(_)) { bg } else { [0; C] };
+            let bgf = base.map(|b| i32::from(b) << COVER_BITS);
             for p in px.chunks_exact_mut(C) {
                 for ch in 0..C {
                     let rel = v[ch] - bgf[ch];

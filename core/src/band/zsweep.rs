@@ -36,9 +36,11 @@ impl<const C: usize> BandBuffer<'_, C> {
         let full = i32::from(FULL);
         for y in self.rows_in_band(y_lo, y_hi) {
             let r = (y - self.band.y0) as usize;
-            let Some((deltas, lo, hi)) = super::take_row(self.cover, r, w) else {
+            let Some(mut row) = super::take_row(self.cover, r, w) else {
                 continue;
             };
+            let (lo, hi) = (row.lo, row.hi);
+            let deltas = &mut *row.deltas;
             let (Some(row_acc), Some((zrow, krow))) = (
                 self.acc.get_mut(r * w * C..(r + 1) * w * C),
                 zbuf.row_mut(r),
@@ -51,6 +53,7 @@ impl<const C: usize> BandBuffer<'_, C> {
             let mut v = plane.at(lo as i32, y);
             let mut zf = zplane.at(lo as i32, y);
             let mut c: i32 = 0;
+            let mut drawn_end = lo;
             for x in lo..w {
                 if x <= hi {
                     c += deltas.get_mut(x).map_or(0, core::mem::take);
@@ -60,6 +63,7 @@ impl<const C: usize> BandBuffer<'_, C> {
                 // The winding integral's size, in the depth buffer's 1/32768 px.
                 let s_px = ((c.unsigned_abs() >> (COVER_BITS - FULL_BITS)) as i32).min(full);
                 if s_px > 0 {
+                    drawn_end = x + 1;
                     let z = zplane.depth(zf);
                     if let (Some(px), Some(zd), Some(k)) = (
                         row_acc.get_mut(x * C..x * C + C),
@@ -113,6 +117,7 @@ impl<const C: usize> BandBuffer<'_, C> {
                 }
                 zf += zplane.gx;
             }
+            row.mark(lo, drawn_end);
         }
     }
 }

@@ -564,3 +564,4 @@ impl EdgeWalk {
         });
     }
 }
+

@@ -42,7 +42,7 @@ impl<const C: usize> BandBuffer<'_, C> {
     /// # }
     /// use softedge::{Band, BandBuffer};
     /// let mut screen = Screen(vec![0; 8]);
-    /// let (mut acc, mut cover) = ([0i32; 8], [0i32; 12]);
+    /// let (mut acc, mut cover) = ([0i32; 8], [0i32; 16]);
     /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band::new(4, 0, 2)).unwrap();
     /// buf.clear([4095]);
     /// buf.flush(&mut screen, |[v]| Gray8::new((v >> 4) as u8)).unwrap();

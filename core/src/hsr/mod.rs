@@ -243,7 +243,7 @@ impl<const C: usize> DepthTriangle<C> {
     /// use softedge::hsr::{DepthBuffer, DepthTriangle, ZPass};
     /// use softedge::{Band, BandBuffer, RenderStyle, SubPoint};
     /// let band = Band::new(8, 0, 8);
-    /// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
+    /// let (mut acc, mut cover) = ([0i32; 64], [0i32; 96]);
     /// let (mut depth, mut covered) = ([0u16; 64], [0u16; 64]);
     /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
     /// let mut zbuf = DepthBuffer::new(&mut depth, &mut covered, band).unwrap();
@@ -307,7 +307,7 @@ impl<const C: usize> DepthTriangle<C> {
 /// use softedge::hsr::{draw_zbuffer, sort_front_to_back, DepthBuffer, DepthTriangle};
 /// use softedge::{Band, BandBuffer, RenderStyle, SubPoint};
 /// let band = Band::new(8, 0, 8);
-/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
+/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 96]);
 /// let (mut depth, mut covered) = ([0u16; 64], [0u16; 64]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// let mut zbuf = DepthBuffer::new(&mut depth, &mut covered, band).unwrap();

@@ -106,9 +106,15 @@ impl RenderStyle {
 /// Why a primitive was not drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
 pub enum DrawError {
     /// A vertex is outside the accepted coordinate range.
     Coord(CoordError),
+    /// A point on the fine grid (1/1024 px) is outside the accepted
+    /// coordinate range.
+    FineCoord(FinePoint),
+    /// A mesh's triangle names a point it does not have.
+    BadIndex,
     /// More than [`MAX_POLYGON_VERTICES`] vertices.
     TooManyVertices,
     /// Per-vertex colours given for a different number of vertices.
@@ -128,7 +134,7 @@ impl From<CoordError> for DrawError {
 /// ```
 /// use softedge::{Band, BandBuffer, RenderStyle, SubPoint, Triangle};
 /// let band = Band::new(8, 0, 8);
-/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
+/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 96]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
 /// // Half of pixel (0, 0), exactly: the triangle (0,0) (1,0) (0,1) px.
@@ -201,7 +207,7 @@ pub enum PolygonColors<'a, const C: usize> {
 /// ```
 /// use softedge::{Band, BandBuffer, Polygon, PolygonColors, RenderStyle, SubPoint};
 /// let band = Band::new(8, 0, 8);
-/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
+/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 96]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
 /// let l_shape = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)].map(|(x, y)| SubPoint::from_px(x, y));
@@ -367,7 +373,7 @@ impl<const C: usize, const D: usize> Prepared<C, D> {
 /// ```
 /// use softedge::{Band, BandBuffer, Line, RenderStyle, SubPoint};
 /// let band = Band::new(8, 0, 4);
-/// let (mut acc, mut cover) = ([0i32; 32], [0i32; 40]);
+/// let (mut acc, mut cover) = ([0i32; 32], [0i32; 48]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
 /// // Horizontal, on the boundary between rows 1 and 2: half in each.

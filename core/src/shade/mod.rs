@@ -72,9 +72,11 @@ pub(crate) struct PlaneFit {
     /// `|2 * area|` in sub-pixels², and the sign that made it positive.
     d: i64,
     sign: i64,
-    /// Offset of the reference pixel's centre from vertex 0, sub-pixels.
+    /// Offset of the reference pixel's centre from vertex 0, grid units.
     cx: i64,
     cy: i64,
+    /// Fraction bits of the vertices' grid.
+    bits: u32,
 }
 
 impl PlaneFit {
@@ -82,17 +84,28 @@ impl PlaneFit {
     /// range keep every product of [`values`](Self::values) below `2^54`
     /// for values below `2^16`.
     pub(crate) fn new(v: [SubPoint; 3]) -> Option<Self> {
-        let (x0, y0) = (i64::from(v[0].x), i64::from(v[0].y));
-        let (dx1, dy1) = (i64::from(v[1].x) - x0, i64::from(v[1].y) - y0);
-        let (dx2, dy2) = (i64::from(v[2].x) - x0, i64::from(v[2].y) - y0);
+        Self::on_grid(v.map(|p| (p.x, p.y)), crate::SUB_BITS)
+    }
+
+    /// The same for vertices on the fine grid (1/1024 px): products stay
+    /// below `2^61`.
+    pub(crate) fn new_fine(v: [crate::geom::FinePoint; 3]) -> Option<Self> {
+        Self::on_grid(v.map(|p| (p.x, p.y)), crate::geom::FINE_BITS)
+    }
+
+    /// Vertices with `bits` fraction bits.
+    fn on_grid(v: [(i32, i32); 3], bits: u32) -> Option<Self> {
+        let (x0, y0) = (i64::from(v[0].0), i64::from(v[0].1));
+        let (dx1, dy1) = (i64::from(v[1].0) - x0, i64::from(v[1].1) - y0);
+        let (dx2, dy2) = (i64::from(v[2].0) - x0, i64::from(v[2].1) - y0);
         let d = dx1 * dy2 - dx2 * dy1;
         if d == 0 {
             return None;
         }
-        let i0 = v[0].x >> crate::SUB_BITS;
-        let j0 = v[0].y >> crate::SUB_BITS;
-        let half = i64::from(crate::SUB_ONE / 2);
-        let per_px = i64::from(crate::SUB_ONE);
+        let i0 = v[0].0 >> bits;
+        let j0 = v[0].1 >> bits;
+        let per_px = 1i64 << bits;
+        let half = per_px / 2;
         Some(Self {
             i0,
             j0,
@@ -104,6 +117,7 @@ impl PlaneFit {
             sign: d.signum(),
             cx: i64::from(i0) * per_px + half - x0,
             cy: i64::from(j0) * per_px + half - y0,
+            bits,
         })
     }
 
@@ -113,8 +127,8 @@ impl PlaneFit {
     pub(crate) fn values(&self, f: [i64; 3]) -> (i64, i64, i64) {
         let (df1, df2) = (f[1] - f[0], f[2] - f[0]);
         let one = 1i64 << PLANE_FRAC;
-        let per_px = i64::from(crate::SUB_ONE);
-        // df/dx = a / d and df/dy = b / d per sub-pixel unit.
+        let per_px = 1i64 << self.bits;
+        // df/dx = a / d and df/dy = b / d per grid unit.
         let a = self.sign * (df1 * self.dy2 - df2 * self.dy1);
         let b = self.sign * (df2 * self.dx1 - df1 * self.dx2);
         let gx = div_round(a * per_px * one, self.d);
@@ -143,7 +157,10 @@ impl<const C: usize> Plane<C> {
     /// The plane through three vertices and their colours, or `None` when
     /// the triangle has zero area.
     pub fn triangle(v: [SubPoint; 3], colors: [[u16; C]; 3], background: [u16; C]) -> Option<Self> {
-        let fit = PlaneFit::new(v)?;
+        Self::fit(PlaneFit::new(v)?, colors, background)
+    }
+
+    fn fit(fit: PlaneFit, colors: [[u16; C]; 3], background: [u16; C]) -> Option<Self> {
         let one = 1i64 << PLANE_FRAC;
         let mut plane = Self {
             i0: fit.i0,
@@ -167,6 +184,12 @@ impl<const C: usize> Plane<C> {
             plane.at0[ch] = (at - bg * one) as i32;
         }
         Some(plane)
+    }
+
+    /// The plane through three fine vertices and their colours (absolute:
+    /// over a zero background), or `None` when the triangle has zero area.
+    pub fn triangle_fine(v: [crate::geom::FinePoint; 3], colors: [[u16; C]; 3]) -> Option<Self> {
+        Self::fit(PlaneFit::new_fine(v)?, colors, [0; C])
     }
 
     /// The fine intensity at the centre of pixel `(i, j)` (setup use: two

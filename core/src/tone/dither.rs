@@ -172,17 +172,29 @@ impl<'a> FloydSteinberg<'a> {
     /// as many pixels as the shortest of `row`, `out` and the error row, and
     /// returns that count.
     pub fn row<T: From<bool>>(&mut self, row: &[[u16; 1]], out: &mut [T]) -> usize {
-        let n = row.len().min(out.len()).min(self.err.len());
+        let n = row.len();
+        self.row_of(n, |x| row.get(x).map_or(0, |v| v[0]), out)
+    }
+
+    /// Like [`row`](Self::row) for a row of `n` pixels given by `value`
+    /// (the renderer reads them from the band without copying the row).
+    pub fn row_of<T: From<bool>>(
+        &mut self,
+        n: usize,
+        value: impl Fn(usize) -> u16,
+        out: &mut [T],
+    ) -> usize {
+        let n = n.min(out.len()).min(self.err.len());
         let reverse = self.reverse;
         self.reverse = !reverse;
-        let (row, out, err) = (&row[..n], &mut out[..n], &mut self.err[..n]);
+        let (out, err) = (&mut out[..n], &mut self.err[..n]);
 
         let mut carry: i32 = 0; // 7/16 of the previous pixel's error
         let mut pending: i32 = 0; // its 1/16 for the row below, at this column
         let mut behind: Option<usize> = None; // the previous pixel's column
         for p in 0..n {
             let x = if reverse { n - 1 - p } else { p };
-            let (Some(&[i]), Some(e_in)) = (row.get(x), err.get(x).copied()) else {
+            let (i, Some(e_in)) = (value(x), err.get(x).copied()) else {
                 break;
             };
             let v = i32::from(i.min(LIN_MAX)) + i32::from(e_in) + carry;

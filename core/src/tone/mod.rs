@@ -36,11 +36,13 @@ mod fixpow;
 pub mod format;
 pub mod gamma;
 pub mod log_code;
+pub mod profile;
 
 pub use bits::{levels, BitDepth};
 pub use dither::{Bayer8, FloydSteinberg};
 pub use gamma::{Curve, Gamma, GammaLut};
 pub use log_code::{GaussLog, LogOutputLut, LogScale, LogValue, PotentiationLut};
+pub use profile::{DiffusionProfile, Profile, ToneRow};
 
 pub use crate::shade::LIN_MAX;
 

@@ -1,0 +1,287 @@
+//! Set-up kept from one band to the next, in caller-provided slots.
+//!
+//! A frame is drawn band by band and every band draws the same shapes in
+//! the same order; what a shape's set-up computes (an edge's step
+//! constants and where its walk stopped, a triangle's Gouraud plane) is the
+//! same in every band. The cache keeps it, keyed by the shape's place in
+//! the drawing order and the edge's place in the shape, so that the next
+//! band resumes each walk instead of starting it over with divisions: the
+//! per-band cost of a shape is then its walk, whatever the band height.
+//!
+//! Every entry also records what it was made from (an edge's end points, a
+//! plane's vertices and colours) and is used only when that matches, so a
+//! drawing closure that draws something else in a later band gets correct
+//! pixels, only without the saving. A full cache is not an error either:
+//! an edge without a slot is set up again in the next band.
+//!
+//! Slots are open-addressed by a hash of the key with a short probe;
+//! entries of edges that have ended are free for reuse.
+
+use crate::edge::{AliasedWalk, EdgeWalk};
+use crate::geom::FinePoint;
+use crate::shade::Plane;
+
+/// How far a lookup probes from a key's home slot.
+const PROBE: usize = 4;
+
+/// One slot of a [`WalkCache`]; make arrays of them with
+/// [`WalkSlot::EMPTY`].
+#[derive(Debug, Clone)]
+pub struct WalkSlot<const C: usize> {
+    key: u64,
+    made_of: [i32; 6],
+    /// The last frame row the entry is needed for.
+    last_row: i32,
+    entry: Entry<C>,
+}
+
+#[derive(Debug, Clone)]
+enum Entry<const C: usize> {
+    Empty,
+    Walk(EdgeWalk),
+    Aliased(AliasedWalk),
+    Plane(Plane<C>),
+}
+
+impl<const C: usize> WalkSlot<C> {
+    /// An unused slot.
+    pub const EMPTY: Self = Self {
+        key: u64::MAX,
+        made_of: [0; 6],
+        last_row: i32::MIN,
+        entry: Entry::Empty,
+    };
+
+    /// Bytes a slot takes (for sizing a cache).
+    pub const SIZE: usize = core::mem::size_of::<Self>();
+}
+
+impl<const C: usize> Default for WalkSlot<C> {
+    fn default() -> Self {
+        Self::EMPTY
+    }
+}
+
+/// The walk states and planes of a frame, over caller-provided slots: a
+/// view made for each band over the same slots, cleared once per frame.
+///
+/// ```
+/// use softedge::canvas::{WalkCache, WalkSlot};
+/// let mut slots = [WalkSlot::<3>::EMPTY; 64];
+/// let mut cache = WalkCache::new(&mut slots);
+/// cache.clear(); // a new frame
+/// assert_eq!(cache.capacity(), 64);
+/// ```
+#[derive(Debug)]
+pub struct WalkCache<'a, const C: usize> {
+    slots: &'a mut [WalkSlot<C>],
+    /// Lookups that found their entry, and set-ups that found no slot.
+    hits: u32,
+    misses: u32,
+}
+
+/// What a key names: an edge of a shape, or a shape's plane.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Item {
+    Edge(u32),
+    Plane(u32),
+}
+
+fn key(serial: u32, item: Item) -> u64 {
+    let (tag, k) = match item {
+        Item::Edge(k) => (0u64, k),
+        Item::Plane(k) => (1u64 << 31, k),
+    };
+    (u64::from(serial) << 32) | tag | u64::from(k & 0x7fff_ffff)
+}
+
+fn home(key: u64, len: usize) -> usize {
+    // Fibonacci hashing of the key's two halves.
+    let h = (key ^ (key >> 29)).wrapping_mul(0x9e37_79b9_7f4a_7c15);
+    ((h >> 32) as usize) % len.max(1)
+}
+
+fn edge_made_of(p0: FinePoint, p1: FinePoint, tag: i32) -> [i32; 6] {
+    [p0.x, p0.y, p1.x, p1.y, tag, 0]
+}
+
+impl<'a, const C: usize> WalkCache<'a, C> {
+    /// A view of `slots` (any number; none is a valid, empty cache),
+    /// keeping what they hold: the same slots, viewed in every band of a
+    /// frame, carry the frame's walks from band to band.
+    pub fn new(slots: &'a mut [WalkSlot<C>]) -> Self {
+        Self {
+            slots,
+            hits: 0,
+            misses: 0,
+        }
+    }
+
+    /// Number of slots.
+    pub fn capacity(&self) -> usize {
+        self.slots.len()
+    }
+
+    /// Forgets every entry (a new frame).
+    pub fn clear(&mut self) {
+        for s in self.slots.iter_mut() {
+            *s = WalkSlot::EMPTY;
+        }
+        self.hits = 0;
+        self.misses = 0;
+    }
+
+    /// Lookups that resumed a stored entry, and entries that found no free
+    /// slot, through this view.
+    pub fn stats(&self) -> (u32, u32) {
+        (self.hits, self.misses)
+    }
+
+    fn find(&mut self, k: u64, made_of: &[i32; 6]) -> Option<usize> {
+        let n = self.slots.len();
+        if n == 0 {
+            return None;
+        }
+        let h = home(k, n);
+        (0..PROBE.min(n))
+            .map(|i| (h + i) % n)
+            .find(|&i| self.slots.get(i).is_some_and(|s| s.key == k && s.made_of == *made_of))
+    }
+
+    /// A slot for a new entry: empty, or holding an entry not needed from
+    /// row `row` on.
+    fn free(&mut self, k: u64, row: i32) -> Option<usize> {
+        let n = self.slots.len();
+        if n == 0 {
+            return None;
+        }
+        let h = home(k, n);
+        (0..PROBE.min(n))
+            .map(|i| (h + i) % n)
+            .find(|&i| self.slots.get(i).is_some_and(|s| s.last_row < row))
+    }
+
+    fn put(&mut self, k: u64, made_of: [i32; 6], row: i32, last_row: i32, entry: Entry<C>) {
+        match self.free(k, row) {
+            Some(i) => {
+                if let Some(s) = self.slots.get_mut(i) {
+                    *s = WalkSlot {
+                        key: k,
+                        made_of,
+                        last_row,
+                        entry,
+                    };
+                }
+            }
+            None => self.misses += 1,
+        }
+    }
+
+    /// Takes the stored walk of edge `item` of shape `serial`, if it was
+    /// made from `p0 -> p1` (`tag` tells walk kinds apart).
+    pub(crate) fn take_walk(
+        &mut self,
+        serial: u32,
+        edge: u32,
+        p0: FinePoint,
+        p1: FinePoint,
+        tag: i32,
+    ) -> Option<EdgeWalk> {
+        let k = key(serial, Item::Edge(edge));
+        let i = self.find(k, &edge_made_of(p0, p1, tag))?;
+        let s = self.slots.get_mut(i)?;
+        let entry = core::mem::replace(&mut s.entry, Entry::Empty);
+        s.key = u64::MAX;
+        s.last_row = i32::MIN;
+        match entry {
+            Entry::Walk(w) => {
+                self.hits += 1;
+                Some(w)
+            }
+            _ => None,
+        }
+    }
+
+    /// Stores the walk of an edge that goes on below row `row`.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn put_walk(
+        &mut self,
+        serial: u32,
+        edge: u32,
+        p0: FinePoint,
+        p1: FinePoint,
+        tag: i32,
+        row: i32,
+        walk: EdgeWalk,
+    ) {
+        let last = walk.rows().end - 1;
+        let k = key(serial, Item::Edge(edge));
+        self.put(k, edge_made_of(p0, p1, tag), row, last, Entry::Walk(walk));
+    }
+
+    /// Like [`take_walk`](Self::take_walk), for an aliased walk.
+    pub(crate) fn take_aliased(
+        &mut self,
+        serial: u32,
+        edge: u32,
+        p0: FinePoint,
+        p1: FinePoint,
+    ) -> Option<AliasedWalk> {
+        let k = key(serial, Item::Edge(edge));
+        let i = self.find(k, &edge_made_of(p0, p1, -1))?;
+        let s = self.slots.get_mut(i)?;
+        let entry = core::mem::replace(&mut s.entry, Entry::Empty);
+        s.key = u64::MAX;
+        s.last_row = i32::MIN;
+        match entry {
+            Entry::Aliased(w) => {
+                self.hits += 1;
+                Some(w)
+            }
+            _ => None,
+        }
+    }
+
+    /// Like [`put_walk`](Self::put_walk), for an aliased walk.
+    pub(crate) fn put_aliased(
+        &mut self,
+        serial: u32,
+        edge: u32,
+        p0: FinePoint,
+        p1: FinePoint,
+        row: i32,
+        walk: AliasedWalk,
+    ) {
+        let last = walk.rows().end - 1;
+        let k = key(serial, Item::Edge(edge));
+        self.put(k, edge_made_of(p0, p1, -1), row, last, Entry::Aliased(walk));
+    }
+
+    /// The stored plane `index` of shape `serial`, if made from
+    /// `made_of`.
+    pub(crate) fn plane(&mut self, serial: u32, index: u32, made_of: &[i32; 6]) -> Option<Plane<C>> {
+        let k = key(serial, Item::Plane(index));
+        let i = self.find(k, made_of)?;
+        match self.slots.get(i).map(|s| &s.entry) {
+            Some(Entry::Plane(p)) => {
+                self.hits += 1;
+                Some(*p)
+            }
+            _ => None,
+        }
+    }
+
+    /// Stores plane `index` of shape `serial`, needed down to `last_row`.
+    pub(crate) fn put_plane(
+        &mut self,
+        serial: u32,
+        index: u32,
+        made_of: [i32; 6],
+        row: i32,
+        last_row: i32,
+        plane: Plane<C>,
+    ) {
+        let k = key(serial, Item::Plane(index));
+        self.put(k, made_of, row, last_row, Entry::Plane(plane));
+    }
+}

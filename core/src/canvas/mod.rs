@@ -1,0 +1,618 @@
+//! The band canvas: what a drawing closure draws into, one band at a time.
+//!
+//! Takes shapes (outlines of straight segments on the fine 1/1024-px grid:
+//! triangles, polygons, meshes, and the paths, shapes, strokes and glyphs
+//! built on them) with a paint (a flat colour, Gouraud colours per vertex)
+//! and a blend; gives the band's accumulator their exact-area, linear-light
+//! composite. Every shape is walked edge by edge into the band's coverage
+//! scratch and composed once, as a whole ([`band`](crate::band)), so a
+//! mesh's shared edges stay seamless in painter's order too.
+//!
+//! The canvas counts the shapes drawn into it: the `n`-th shape of every
+//! band is the same shape, and with a [`WalkCache`] each of its edges
+//! resumes its walk where the band above left it, and its Gouraud planes
+//! are fitted once per frame. A shape that misses the band is rejected by
+//! its bounds before any set-up.
+//!
+//! Rejected shapes (a vertex outside the coordinate range, too many
+//! vertices for a Gouraud polygon) are not drawn, counted, and the first
+//! reason kept ([`Canvas::skipped`]): the rest of the frame is drawn.
+
+mod cache;
+
+pub use cache::{WalkCache, WalkSlot};
+
+use core::ops::Range;
+
+use crate::band::{BandBuffer, ComposeOp, Coverage, Paint};
+use crate::edge::{AliasedWalk, AreaMode, EdgeWalk};
+use crate::geom::{FinePoint, SubPoint, FINE_BITS};
+use crate::pixel_model::{walk_bed_of_nails, walk_circular, walk_hex19, walk_hex7, CircularFilter};
+use crate::raster::{DrawError, PixelModel, RenderStyle};
+use crate::shade::Plane;
+use crate::style::{Blend, FillRule, Opacity};
+
+/// A box in fine units, `x0..x1` by `y0..y1` (half-open).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FineRect {
+    /// Left, fine units.
+    pub x0: i32,
+    /// Top, fine units.
+    pub y0: i32,
+    /// Right (exclusive), fine units.
+    pub x1: i32,
+    /// Bottom (exclusive), fine units.
+    pub y1: i32,
+}
+
+impl FineRect {
+    /// The box around `points`, or `None` for none.
+    pub fn around(points: impl IntoIterator<Item = FinePoint>) -> Option<Self> {
+        let mut it = points.into_iter();
+        let first = it.next()?;
+        let mut r = Self {
+            x0: first.x,
+            y0: first.y,
+            x1: first.x,
+            y1: first.y,
+        };
+        for p in it {
+            r.x0 = r.x0.min(p.x);
+            r.y0 = r.y0.min(p.y);
+            r.x1 = r.x1.max(p.x);
+            r.y1 = r.y1.max(p.y);
+        }
+        Some(r)
+    }
+}
+
+/// Something the canvas can fill: closed contours of straight segments on
+/// the fine grid.
+///
+/// `segments` must report the same segments in the same order every time
+/// (a band's cached walks are found by their place in it), and every point
+/// must lie in `bounds`.
+pub trait Outline {
+    /// A box holding every point of every segment.
+    fn bounds(&self) -> Option<FineRect>;
+    /// Calls `f` with every directed segment of the closed contours.
+    fn segments<F: FnMut(FinePoint, FinePoint)>(&self, f: F);
+}
+
+/// A closed polygon given by its vertices (the last joins the first).
+#[derive(Debug, Clone, Copy)]
+pub struct Contour<'a>(pub &'a [FinePoint]);
+
+impl Outline for Contour<'_> {
+    fn bounds(&self) -> Option<FineRect> {
+        FineRect::around(self.0.iter().copied())
+    }
+    fn segments<F: FnMut(FinePoint, FinePoint)>(&self, mut f: F) {
+        let v = self.0;
+        if let (Some(&last), true) = (v.last(), v.len() >= 2) {
+            let mut prev = last;
+            for &p in v {
+                f(prev, p);
+                prev = p;
+            }
+        }
+    }
+}
+
+impl Outline for [FinePoint; 3] {
+    fn bounds(&self) -> Option<FineRect> {
+        FineRect::around(self.iter().copied())
+    }
+    fn segments<F: FnMut(FinePoint, FinePoint)>(&self, mut f: F) {
+        let [a, b, c] = *self;
+        f(a, b);
+        f(b, c);
+        f(c, a);
+    }
+}
+
+/// How many shapes a band's canvas skipped, and the first reason.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Skipped {
+    /// Shapes not drawn.
+    pub count: u32,
+    /// The first one's place in the drawing order and why.
+    pub first: Option<(u32, DrawError)>,
+}
+
+/// The canvas of one band: a [`BandBuffer`] with the frame's
+/// [`WalkCache`] and the count of shapes drawn.
+#[derive(Debug)]
+pub struct Canvas<'c, 'b, const C: usize> {
+    buf: &'c mut BandBuffer<'b, C>,
+    cache: Option<WalkCache<'c, C>>,
+    serial: u32,
+    style: RenderStyle,
+    skipped: Skipped,
+}
+
+/// Which walk an edge takes under a style.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum WalkKind {
+    Box(AreaMode),
+    Aliased,
+    Sampled,
+}
+
+impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
+    /// A canvas over a cleared band buffer, with or without a cache (give
+    /// every band of a frame a view of the same slots, cleared when the
+    /// frame starts).
+    pub fn new(buf: &'c mut BandBuffer<'b, C>, cache: Option<WalkCache<'c, C>>) -> Self {
+        Self {
+            buf,
+            cache,
+            serial: 0,
+            style: RenderStyle::default(),
+            skipped: Skipped::default(),
+        }
+    }
+
+    /// The band drawn.
+    pub fn band(&self) -> crate::band::Band {
+        self.buf.band()
+    }
+
+    /// The pixel model every following shape is drawn with (anti-aliased
+    /// exact area by default).
+    pub fn set_style(&mut self, style: RenderStyle) {
+        self.style = style;
+    }
+
+    /// Shapes skipped so far in this band.
+    pub fn skipped(&self) -> Skipped {
+        self.skipped
+    }
+
+    /// The cache's hits and misses in this band.
+    pub fn cache_stats(&self) -> (u32, u32) {
+        self.cache.as_ref().map_or((0, 0), |c| c.stats())
+    }
+
+    /// The band buffer under the canvas.
+    pub fn buffer(&mut self) -> &mut BandBuffer<'b, C> {
+        self.buf
+    }
+
+    /// Counts a shape that was rejected.
+    fn skip(&mut self, serial: u32, e: DrawError) {
+        self.skipped.count += 1;
+        if self.skipped.first.is_none() {
+            self.skipped.first = Some((serial, e));
+        }
+    }
+
+    /// The next shape's place in the drawing order.
+    fn next_serial(&mut self) -> u32 {
+        let s = self.serial;
+        self.serial = self.serial.wrapping_add(1);
+        s
+    }
+
+    /// Fills `outline` by `rule` with one flat linear colour.
+    ///
+    /// ```
+    /// use softedge::canvas::{Canvas, Contour};
+    /// use softedge::geom::FinePoint;
+    /// use softedge::style::{Blend, FillRule, Opacity};
+    /// use softedge::{Band, BandBuffer};
+    /// let (mut acc, mut cover) = ([0i32; 16], [0i32; 32]);
+    /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band::new(4, 0, 4)).unwrap();
+    /// buf.clear([1000]);
+    /// let mut canvas = Canvas::new(&mut buf, None);
+    /// let p = |x, y| FinePoint::from_px(x, y);
+    /// let square = [p(0, 0), p(2, 0), p(2, 2), p(0, 2)];
+    /// canvas
+    ///     .fill(&Contour(&square), [3000], FillRule::NonZero, Blend::Over, Opacity::from_ratio(1, 2))
+    ///     .unwrap();
+    /// // Half of 3000 over 1000: the linear midpoint.
+    /// assert_eq!(canvas.buffer().lin12(1, 1), Some([2000]));
+    /// assert_eq!(canvas.buffer().lin12(3, 3), Some([1000]));
+    /// ```
+    pub fn fill<O: Outline + ?Sized>(
+        &mut self,
+        outline: &O,
+        color: [u16; C],
+        rule: FillRule,
+        blend: Blend,
+        opacity: Opacity,
+    ) -> Result<(), DrawError> {
+        let serial = self.next_serial();
+        let color = color.map(|v| v.min(crate::LIN_MAX));
+        let op = match blend {
+            Blend::Over => ComposeOp::Over(opacity),
+            Blend::Add => ComposeOp::Add(opacity),
+        };
+        self.fill_outline(serial, 0, outline, Coverage::Rule(rule), &Paint::Flat(color), op)
+            .inspect_err(|&e| self.skip(serial, e))
+    }
+
+    /// Fills a triangle with a linear colour per vertex (Gouraud), or one
+    /// colour when all three are equal.
+    pub fn fill_triangle(
+        &mut self,
+        v: [FinePoint; 3],
+        colors: [[u16; C]; 3],
+        blend: Blend,
+        opacity: Opacity,
+    ) -> Result<(), DrawError> {
+        let serial = self.next_serial();
+        let op = match blend {
+            Blend::Over => ComposeOp::Over(opacity),
+            Blend::Add => ComposeOp::Add(opacity),
+        };
+        let r = self.triangle(serial, 0, v, colors, op);
+        r.inspect_err(|&e| self.skip(serial, e))
+    }
+
+    /// Fills a mesh: triangles given as index triples into `points`, with
+    /// one colour per point (`colors`, Gouraud) or one for all. It is
+    /// composed as one shape: its shared edges are seamless in painter's
+    /// order (no background shows through them) and opacity applies to the
+    /// mesh as a whole.
+    pub fn fill_mesh(
+        &mut self,
+        points: &[FinePoint],
+        triangles: &[[u16; 3]],
+        colors: MeshColors<'_, C>,
+        blend: Blend,
+        opacity: Opacity,
+    ) -> Result<(), DrawError> {
+        let serial = self.next_serial();
+        let r = self.mesh(serial, points, triangles, colors, blend, opacity);
+        r.inspect_err(|&e| self.skip(serial, e))
+    }
+
+    fn mesh(
+        &mut self,
+        serial: u32,
+        points: &[FinePoint],
+        triangles: &[[u16; 3]],
+        colors: MeshColors<'_, C>,
+        blend: Blend,
+        opacity: Opacity,
+    ) -> Result<(), DrawError> {
+        let mesh = Mesh { points, triangles };
+        mesh.check()?;
+        if let MeshColors::PerPoint(c) = colors {
+            if c.len() != points.len() {
+                return Err(DrawError::ColorCount);
+            }
+        }
+        let flat = match colors {
+            MeshColors::Flat(c) => Some(c),
+            MeshColors::PerPoint(c) => c.first().copied().filter(|f| c.iter().all(|x| x == f)),
+        };
+        let flat = flat.map(|c| c.map(|v| v.min(crate::LIN_MAX)));
+        let MeshColors::PerPoint(per_point) = colors else {
+            // One colour: one walk, one compose.
+            let Some(color) = flat else {
+                return Ok(());
+            };
+            let op = match blend {
+                Blend::Over => ComposeOp::Over(opacity),
+                Blend::Add => ComposeOp::Add(opacity),
+            };
+            return self.fill_outline(serial, 0, &mesh, Coverage::Signed(1), &Paint::Flat(color), op);
+        };
+        if let Some(color) = flat {
+            let op = match blend {
+                Blend::Over => ComposeOp::Over(opacity),
+                Blend::Add => ComposeOp::Add(opacity),
+            };
+            return self.fill_outline(serial, 0, &mesh, Coverage::Signed(1), &Paint::Flat(color), op);
+        }
+        // Gouraud: in painter's order, first take the mesh's coverage out
+        // of what is under it, then add each triangle's colour; added,
+        // triangle by triangle.
+        let per_triangle = match blend {
+            Blend::Over => {
+                let none = Paint::Flat([0; C]);
+                self.fill_outline(
+                    serial,
+                    0,
+                    &mesh,
+                    Coverage::Signed(1),
+                    &none,
+                    ComposeOp::Attenuate(opacity),
+                )?;
+                ComposeOp::Accumulate(opacity)
+            }
+            Blend::Add => ComposeOp::Add(opacity),
+        };
+        // Edge indices after the whole mesh's (3 per triangle).
+        let base = 3 * triangles.len() as u32;
+        for (k, t) in triangles.iter().enumerate() {
+            let color = |i: u16| per_point.get(usize::from(i)).copied();
+            let (Some(v), Some(c0), Some(c1), Some(c2)) =
+                (mesh.triangle(t), color(t[0]), color(t[1]), color(t[2]))
+            else {
+                continue;
+            };
+            self.triangle(serial, base + 3 * k as u32, v, [c0, c1, c2], per_triangle)?;
+        }
+        Ok(())
+    }
+
+    /// One Gouraud triangle with the edge indices `first..first + 3` and
+    /// plane index `first` of shape `serial`.
+    fn triangle(
+        &mut self,
+        serial: u32,
+        first: u32,
+        v: [FinePoint; 3],
+        colors: [[u16; C]; 3],
+        op: ComposeOp,
+    ) -> Result<(), DrawError> {
+        for p in v {
+            if !p.in_range() {
+                return Err(DrawError::FineCoord(p));
+            }
+        }
+        let Some(b) = v.bounds() else {
+            return Ok(());
+        };
+        if !self.touches(&b) {
+            return Ok(());
+        }
+        let [c0, c1, c2] = colors;
+        if c0 == c1 && c1 == c2 {
+            let paint = Paint::Flat(c0.map(|x| x.min(crate::LIN_MAX)));
+            return self.fill_outline(serial, first, &v, Coverage::Rule(FillRule::NonZero), &paint, op);
+        }
+        let Some(plane) = self.plane(serial, first, v, colors, b) else {
+            return Ok(());
+        };
+        let oriented = orient(v);
+        self.fill_outline(serial, first, &oriented, Coverage::Signed(1), &Paint::Plane(&plane), op)
+    }
+
+    /// The Gouraud plane of a triangle: fitted once per frame when cached.
+    fn plane(
+        &mut self,
+        serial: u32,
+        index: u32,
+        v: [FinePoint; 3],
+        colors: [[u16; C]; 3],
+        b: FineRect,
+    ) -> Option<Plane<C>> {
+        let made_of = plane_key(v, &colors);
+        if let Some(cache) = self.cache.as_mut() {
+            if let Some(p) = cache.plane(serial, index, &made_of) {
+                return Some(p);
+            }
+        }
+        let plane = Plane::triangle_fine(v, colors)?;
+        let band = self.buf.band();
+        let band_end = band.y0 + i32::from(band.rows);
+        let last = b.y1 >> FINE_BITS;
+        if last >= band_end {
+            if let Some(cache) = self.cache.as_mut() {
+                cache.put_plane(serial, index, made_of, band.y0, last, plane);
+            }
+        }
+        Some(plane)
+    }
+
+    /// True when the box can touch the band (pixel models reach up to
+    /// 1.5 px beyond a pixel).
+    fn touches(&self, b: &FineRect) -> bool {
+        let band = self.buf.band();
+        let margin = 2;
+        let rows = band.row_range();
+        let cols = band.column_range();
+        (b.y1 >> FINE_BITS) + margin >= rows.start
+            && (b.y0 >> FINE_BITS) - margin < rows.end
+            && (b.x1 >> FINE_BITS) + margin >= cols.start
+            && (b.x0 >> FINE_BITS) - margin < cols.end
+    }
+
+    /// Walks the outline's edges (indices from `first`) into the scratch
+    /// and composes it.
+    fn fill_outline<O: Outline + ?Sized>(
+        &mut self,
+        serial: u32,
+        first: u32,
+        outline: &O,
+        coverage: Coverage,
+        paint: &Paint<'_, C>,
+        op: ComposeOp,
+    ) -> Result<(), DrawError> {
+        let Some(b) = outline.bounds() else {
+            return Ok(());
+        };
+        for (x, y) in [(b.x0, b.y0), (b.x1, b.y1)] {
+            let p = FinePoint::new(x, y);
+            if !p.in_range() {
+                return Err(DrawError::FineCoord(p));
+            }
+        }
+        if !self.touches(&b) {
+            return Ok(());
+        }
+        let band = self.buf.band();
+        let kind = match self.style {
+            s if !s.antialias => WalkKind::Aliased,
+            RenderStyle {
+                model: PixelModel::Box,
+                ..
+            } => WalkKind::Box(AreaMode::Exact),
+            RenderStyle {
+                model: PixelModel::BoxSeed,
+                ..
+            } => WalkKind::Box(AreaMode::SeedFormula),
+            _ => WalkKind::Sampled,
+        };
+        let margin = if kind == WalkKind::Sampled { 2 } else { 0 };
+        let rows: Range<i32> = ((b.y0 >> FINE_BITS) - margin).max(band.y0)
+            ..((b.y1 >> FINE_BITS) + 1 + margin).min(band.y0 + i32::from(band.rows));
+        if rows.start >= rows.end {
+            return Ok(());
+        }
+        let cols = band.column_range();
+        let style = self.style;
+        let buf = &mut *self.buf;
+        let mut cache = self.cache.as_mut();
+        let mut index = first;
+        outline.segments(|p0, p1| {
+            let k = index;
+            index = index.wrapping_add(1);
+            let (ylo, yhi) = (p0.y.min(p1.y) >> FINE_BITS, p0.y.max(p1.y) >> FINE_BITS);
+            if yhi + margin < rows.start || ylo - margin >= rows.end {
+                return;
+            }
+            match kind {
+                WalkKind::Box(mode) => {
+                    let tag = mode as i32;
+                    let stored = cache.as_deref_mut().and_then(|c| c.take_walk(serial, k, p0, p1, tag));
+                    let walk = stored.or_else(|| EdgeWalk::new(p0, p1, mode, cols.clone()));
+                    if let Some(mut w) = walk {
+                        w.walk(rows.clone(), buf);
+                        if w.rows().end > rows.end {
+                            if let Some(c) = cache.as_deref_mut() {
+                                c.put_walk(serial, k, p0, p1, tag, rows.start, w);
+                            }
+                        }
+                    }
+                }
+                WalkKind::Aliased => {
+                    let stored = cache.as_deref_mut().and_then(|c| c.take_aliased(serial, k, p0, p1));
+                    if let Some(mut w) = stored.or_else(|| AliasedWalk::new(p0, p1)) {
+                        w.walk(rows.clone(), buf);
+                        if w.rows().end > rows.end {
+                            if let Some(c) = cache.as_deref_mut() {
+                                c.put_aliased(serial, k, p0, p1, rows.start, w);
+                            }
+                        }
+                    }
+                }
+                WalkKind::Sampled => sampled_edge(buf, p0, p1, &style, rows.clone()),
+            }
+        });
+        buf.compose(rows.start, rows.end, coverage, paint, op);
+        Ok(())
+    }
+}
+
+/// The colours of a mesh.
+#[derive(Debug, Clone, Copy)]
+pub enum MeshColors<'a, const C: usize> {
+    /// One colour for every triangle.
+    Flat([u16; C]),
+    /// One colour per point (Gouraud).
+    PerPoint(&'a [[u16; C]]),
+}
+
+/// A mesh's triangles, each walked with positive orientation so that the
+/// integral of the winding number is the coverage (and shared edges,
+/// walked both ways, cancel).
+struct Mesh<'a> {
+    points: &'a [FinePoint],
+    triangles: &'a [[u16; 3]],
+}
+
+impl Mesh<'_> {
+    fn check(&self) -> Result<(), DrawError> {
+        for t in self.triangles {
+            if t.iter().any(|&i| usize::from(i) >= self.points.len()) {
+                return Err(DrawError::BadIndex);
+            }
+        }
+        for &p in self.points {
+            if !p.in_range() {
+                return Err(DrawError::FineCoord(p));
+            }
+        }
+        Ok(())
+    }
+
+    fn triangle(&self, t: &[u16; 3]) -> Option<[FinePoint; 3]> {
+        Some([
+            *self.points.get(usize::from(t[0]))?,
+            *self.points.get(usize::from(t[1]))?,
+            *self.points.get(usize::from(t[2]))?,
+        ])
+    }
+}
+
+impl Outline for Mesh<'_> {
+    fn bounds(&self) -> Option<FineRect> {
+        FineRect::around(
+            self.triangles
+                .iter()
+                .flat_map(|t| t.iter())
+                .filter_map(|&i| self.points.get(usize::from(i)).copied()),
+        )
+    }
+    fn segments<F: FnMut(FinePoint, FinePoint)>(&self, mut f: F) {
+        for t in self.triangles {
+            if let Some(v) = self.triangle(t) {
+                let [a, b, c] = orient(v);
+                f(a, b);
+                f(b, c);
+                f(c, a);
+            }
+        }
+    }
+}
+
+/// The triangle in the vertex order whose winding integral is its
+/// coverage: counter-clockwise on screen (y down), negative doubled area.
+fn orient(v: [FinePoint; 3]) -> [FinePoint; 3] {
+    let [a, b, c] = v;
+    let cross = (i64::from(b.x) - i64::from(a.x)) * (i64::from(c.y) - i64::from(a.y))
+        - (i64::from(b.y) - i64::from(a.y)) * (i64::from(c.x) - i64::from(a.x));
+    if cross > 0 {
+        [a, c, b]
+    } else {
+        v
+    }
+}
+
+/// What a cached plane was made from: the vertices and a hash of the
+/// colours.
+fn plane_key<const C: usize>(v: [FinePoint; 3], colors: &[[u16; C]; 3]) -> [i32; 6] {
+    // FNV-1a over the colours and the last vertex, folded into two words.
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for c in colors.iter().flatten() {
+        h = (h ^ u64::from(*c)).wrapping_mul(0x100_0000_01b3);
+    }
+    h = (h ^ (v[2].x as u32 as u64) ^ (u64::from(v[2].y as u32) << 32)).wrapping_mul(0x100_0000_01b3);
+    [v[0].x, v[0].y, v[1].x, v[1].y, h as i32, (h >> 32) as i32]
+}
+
+/// One edge under a sampled pixel model (bed-of-nails, hexagonal,
+/// circular): these sample on the 1/16-px vertex grid, so the edge's end
+/// points are rounded to it.
+fn sampled_edge<const C: usize>(
+    buf: &mut BandBuffer<'_, C>,
+    p0: FinePoint,
+    p1: FinePoint,
+    style: &RenderStyle,
+    rows: Range<i32>,
+) {
+    let sub = |p: FinePoint| {
+        const HALF: i32 = 1 << (FINE_BITS - crate::SUB_BITS - 1);
+        SubPoint::new(
+            p.x.saturating_add(HALF) >> (FINE_BITS - crate::SUB_BITS),
+            p.y.saturating_add(HALF) >> (FINE_BITS - crate::SUB_BITS),
+        )
+    };
+    let (a, b) = (sub(p0), sub(p1));
+    match style.model {
+        PixelModel::BedOfNails4 => walk_bed_of_nails(buf, a, b, 2, rows),
+        PixelModel::BedOfNails8 => walk_bed_of_nails(buf, a, b, 4, rows),
+        PixelModel::Hex7 => walk_hex7(buf, a, b, rows),
+        PixelModel::Hex19 => walk_hex19(buf, a, b, rows),
+        PixelModel::Cone => walk_circular(buf, a, b, CircularFilter::Cone, rows),
+        PixelModel::Gaussian => walk_circular(buf, a, b, CircularFilter::Gaussian, rows),
+        PixelModel::Hamming => walk_circular(buf, a, b, CircularFilter::Hamming, rows),
+        _ => {}
+    }
+}

@@ -1,0 +1,353 @@
+//! The frame loop: bands drawn, toned and flushed to a display, so that
+//! users do not write the band loop by hand.
+//!
+//! Takes any embedded-graphics `DrawTarget` (a write-only SPI display is
+//! fine: nothing is read back), a display [`Profile`] (the tone stage: γ
+//! table and pixel format, or dithering to 1 bit) and a drawing closure;
+//! gives the display one `fill_contiguous` per band over the band's
+//! rectangle, a DMA-friendly stream of rows.
+//!
+//! Per band the renderer hands the closure a [`Canvas`] over the band (the
+//! closure is called once per band, so keep the scene in data it can read
+//! again), then streams the band through the profile: each pixel's one
+//! rounding to 12 bits, the profile's colour, and the accumulator reset to
+//! the background for the next band in the same pass (no separate clear).
+//! Rows that no shape touched are sent as the background's colour without
+//! being resolved, when the profile has a uniform colour for it.
+//!
+//! [`Renderer::render_window`] redraws only a rectangle of the frame: bands
+//! of that width, one window set-up per band on the target; the shapes
+//! outside it cost their bounds test only.
+
+use embedded_graphics_core::draw_target::DrawTarget;
+use embedded_graphics_core::geometry::{OriginDimensions, Point, Size};
+use embedded_graphics_core::primitives::Rectangle;
+
+use crate::band::{Band, BandBuffer, BandError, Bands};
+use crate::canvas::{Canvas, Skipped, WalkCache, WalkSlot};
+use crate::tone::profile::{Profile, ToneRow};
+
+/// Why a frame was not rendered, or not completely.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum RenderError<T, E> {
+    /// The band buffers do not fit the frame's bands.
+    Band(BandError),
+    /// The frame is larger than the display (`frame` vs `display`, px).
+    Size {
+        /// Frame width and height.
+        frame: (u16, u16),
+        /// Display width and height.
+        display: (u32, u32),
+    },
+    /// The drawing closure failed in the band starting at row `band_y0`;
+    /// the rest of the frame was drawn and sent.
+    Draw {
+        /// First row of the band where it first failed.
+        band_y0: i32,
+        /// What it returned.
+        error: E,
+    },
+    /// The display reported an error (the frame stops there).
+    Target(T),
+}
+
+/// What a rendered frame skipped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct FrameReport {
+    /// Shapes rejected (the most in any one band), and the first one's
+    /// place in the drawing order and reason.
+    pub skipped: Skipped,
+    /// Bands drawn.
+    pub bands: u32,
+}
+
+/// Renders frames band by band into any `DrawTarget`, over caller-provided
+/// buffers sized for `band_rows` rows of the frame's width.
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::Gray8;
+/// # use embedded_graphics_core::{draw_target::DrawTarget, geometry::{OriginDimensions, Size}, Pixel};
+/// # struct Screen(Vec<u8>);
+/// # impl OriginDimensions for Screen { fn size(&self) -> Size { Size::new(16, 12) } }
+/// # impl DrawTarget for Screen {
+/// #     type Color = Gray8;
+/// #     type Error = core::convert::Infallible;
+/// #     fn draw_iter<I: IntoIterator<Item = Pixel<Gray8>>>(&mut self, px: I) -> Result<(), Self::Error> {
+/// #         for Pixel(p, c) in px { if p.x >= 0 && p.x < 16 && p.y >= 0 && p.y < 12 { self.0[(p.y * 16 + p.x) as usize] = embedded_graphics_core::pixelcolor::GrayColor::luma(&c); } }
+/// #         Ok(())
+/// #     }
+/// # }
+/// use softedge::canvas::{Contour, WalkSlot};
+/// use softedge::geom::FinePoint;
+/// use softedge::render::Renderer;
+/// use softedge::style::{Blend, FillRule, Opacity};
+/// use softedge::tone::{format::Gray8Format, Curve};
+/// use softedge::BandBuffer;
+/// const W: u16 = 16;
+/// const ROWS: u16 = 4;
+/// let mut acc = [0i32; BandBuffer::<1>::acc_len(W, ROWS)];
+/// let mut cover = [0i32; BandBuffer::<1>::cover_len(W, ROWS)];
+/// let mut slots = [WalkSlot::<1>::EMPTY; 8];
+/// let mut screen = Screen(vec![0; 16 * 12]);
+/// let p = |x, y| FinePoint::from_px(x, y);
+/// let tri = [p(0, 0), p(16, 0), p(0, 12)];
+/// let mut renderer = Renderer::new(&mut acc, &mut cover, &mut slots, W, 12, ROWS).unwrap();
+/// let mut gray = Gray8Format::new(Curve::Srgb);
+/// renderer
+///     .render(&mut screen, &mut gray, [0], |c| {
+///         c.fill(&Contour(&tri), [4095], FillRule::NonZero, Blend::Over, Opacity::OPAQUE)
+///     })
+///     .unwrap();
+/// assert_eq!(screen.0[0], 255);
+/// assert_eq!(screen.0[16 * 12 - 1], 0);
+/// ```
+#[derive(Debug)]
+pub struct Renderer<'a, const C: usize> {
+    acc: &'a mut [i32],
+    cover: &'a mut [i32],
+    slots: &'a mut [WalkSlot<C>],
+    /// The last frame's cache hits and misses.
+    stats: (u32, u32),
+    width: u16,
+    height: u16,
+    band_rows: u16,
+    /// The accumulator is known to hold this background (it is reset to it
+    /// as each band is sent).
+    holds: Option<[u16; C]>,
+}
+
+impl<'a, const C: usize> Renderer<'a, C> {
+    /// A renderer for a `width x height` frame in bands of `band_rows`
+    /// rows, over `acc` and `cover` (at least
+    /// [`BandBuffer::acc_len`] and [`BandBuffer::cover_len`] for
+    /// `width x band_rows`) and `slots` for the walk cache (any number,
+    /// none too; see [`WalkCache`]).
+    pub fn new(
+        acc: &'a mut [i32],
+        cover: &'a mut [i32],
+        slots: &'a mut [WalkSlot<C>],
+        width: u16,
+        height: u16,
+        band_rows: u16,
+    ) -> Result<Self, BandError> {
+        let rows = band_rows.max(1);
+        if width == 0 || height == 0 || width > crate::band::MAX_WIDTH || height > crate::band::MAX_WIDTH {
+            return Err(BandError::BadBand);
+        }
+        if acc.len() < BandBuffer::<C>::acc_len(width, rows) {
+            return Err(BandError::AccTooSmall);
+        }
+        if cover.len() < BandBuffer::<C>::cover_len(width, rows) {
+            return Err(BandError::CoverTooSmall);
+        }
+        Ok(Self {
+            acc,
+            cover,
+            slots,
+            stats: (0, 0),
+            width,
+            height,
+            band_rows: rows,
+            holds: None,
+        })
+    }
+
+    /// The walk cache's hits and misses in the last frame.
+    pub fn cache_stats(&self) -> (u32, u32) {
+        self.stats
+    }
+
+    /// Renders one frame: per band, the background, the closure's shapes,
+    /// the profile, one `fill_contiguous`.
+    ///
+    /// A shape the canvas rejects is skipped and reported
+    /// ([`FrameReport::skipped`]); the rest of the frame is drawn. An error
+    /// the closure returns is reported after the frame, which is drawn and
+    /// sent whole (each band as far as the closure drew it).
+    pub fn render<D, P, E, F>(
+        &mut self,
+        target: &mut D,
+        profile: &mut P,
+        background: [u16; C],
+        draw: F,
+    ) -> Result<FrameReport, RenderError<D::Error, E>>
+    where
+        D: DrawTarget + OriginDimensions,
+        P: Profile<C, Color = D::Color>,
+        F: FnMut(&mut Canvas<'_, '_, C>) -> Result<(), E>,
+    {
+        let size = target.size();
+        if u32::from(self.width) > size.width || u32::from(self.height) > size.height {
+            return Err(RenderError::Size {
+                frame: (self.width, self.height),
+                display: (size.width, size.height),
+            });
+        }
+        let bands = Bands::new(self.width, self.height, self.band_rows);
+        self.frame(target, profile, background, bands, draw)
+    }
+
+    /// Renders only the window `area` of the frame (clipped to it): what a
+    /// small change costs. The target gets one `fill_contiguous` per band
+    /// over the window's part of the band. With a dithering profile, the
+    /// window is dithered on its own (Bayer matches the full frame; error
+    /// diffusion restarts at the window's edge).
+    pub fn render_window<D, P, E, F>(
+        &mut self,
+        target: &mut D,
+        profile: &mut P,
+        background: [u16; C],
+        area: Rectangle,
+        draw: F,
+    ) -> Result<FrameReport, RenderError<D::Error, E>>
+    where
+        D: DrawTarget + OriginDimensions,
+        P: Profile<C, Color = D::Color>,
+        F: FnMut(&mut Canvas<'_, '_, C>) -> Result<(), E>,
+    {
+        let frame = Rectangle::new(Point::zero(), Size::new(u32::from(self.width), u32::from(self.height)));
+        let area = area.intersection(&frame);
+        let (w, h) = (area.size.width as u16, area.size.height as u16);
+        if w == 0 || h == 0 {
+            return Ok(FrameReport::default());
+        }
+        let bands = Bands::window(area.top_left.x, area.top_left.y, w, h, self.band_rows);
+        self.frame(target, profile, background, bands, draw)
+    }
+
+    fn frame<D, P, E, F>(
+        &mut self,
+        target: &mut D,
+        profile: &mut P,
+        background: [u16; C],
+        bands: Bands,
+        mut draw: F,
+    ) -> Result<FrameReport, RenderError<D::Error, E>>
+    where
+        D: DrawTarget,
+        P: Profile<C, Color = D::Color>,
+        F: FnMut(&mut Canvas<'_, '_, C>) -> Result<(), E>,
+    {
+        let bg = background.map(|v| v.min(crate::LIN_MAX));
+        WalkCache::new(&mut *self.slots).clear();
+        self.stats = (0, 0);
+        profile.start_frame();
+        let mut report = FrameReport::default();
+        let mut failed: Option<(i32, E)> = None;
+        for band in bands {
+            let mut buf = match self.holds {
+                Some(h) if h == bg && band.width == self.width => {
+                    BandBuffer::reuse(&mut *self.acc, &mut *self.cover, band, bg)
+                }
+                _ => BandBuffer::new(&mut *self.acc, &mut *self.cover, band).map(|mut b| {
+                    b.clear(bg);
+                    b
+                }),
+            }
+            .map_err(RenderError::Band)?;
+            // The band is cleared to `bg` when it is sent.
+            self.holds = None;
+            let mut canvas = Canvas::new(&mut buf, Some(WalkCache::new(&mut *self.slots)));
+            let r = draw(&mut canvas);
+            let skipped = canvas.skipped();
+            let (hits, misses) = canvas.cache_stats();
+            self.stats = (self.stats.0 + hits, self.stats.1 + misses);
+            if skipped.count > report.skipped.count {
+                report.skipped.count = skipped.count;
+            }
+            if report.skipped.first.is_none() {
+                report.skipped.first = skipped.first;
+            }
+            if let (Err(e), None) = (r, &failed) {
+                failed = Some((band.y0, e));
+            }
+            send(&mut buf, target, profile).map_err(RenderError::Target)?;
+            self.holds = (band.width == self.width).then_some(bg);
+            report.bands += 1;
+        }
+        match failed {
+            Some((band_y0, error)) => Err(RenderError::Draw { band_y0, error }),
+            None => Ok(report),
+        }
+    }
+}
+
+/// Sends a band through `profile` to `target` in one `fill_contiguous`,
+/// resetting the accumulator to the background as it goes.
+fn send<D, P, const C: usize>(
+    buf: &mut BandBuffer<'_, C>,
+    target: &mut D,
+    profile: &mut P,
+) -> Result<(), D::Error>
+where
+    D: DrawTarget,
+    P: Profile<C, Color = D::Color>,
+{
+    let band = buf.band();
+    let area = Rectangle::new(
+        Point::new(band.x0, band.y0),
+        Size::new(u32::from(band.width), u32::from(band.rows)),
+    );
+    let bg = buf.background();
+    let uniform = profile.uniform(bg);
+    let pixels = BandPixels {
+        buf,
+        profile,
+        uniform,
+        band,
+        r: 0,
+        k: 0,
+        dirty: 0..0,
+    };
+    target.fill_contiguous(&area, pixels)
+}
+
+/// A band's pixels in row order, through the profile.
+struct BandPixels<'x, 'b, P: Profile<C>, const C: usize> {
+    buf: &'x mut BandBuffer<'b, C>,
+    profile: &'x mut P,
+    uniform: Option<P::Color>,
+    band: Band,
+    /// Current row (band-relative) and column.
+    r: u16,
+    k: u16,
+    /// Columns of the current row that hold something besides the
+    /// background.
+    dirty: core::ops::Range<u16>,
+}
+
+impl<P: Profile<C>, const C: usize> Iterator for BandPixels<'_, '_, P, C> {
+    type Item = P::Color;
+
+    #[inline]
+    fn next(&mut self) -> Option<P::Color> {
+        if self.k == self.band.width {
+            self.k = 0;
+            self.r += 1;
+        }
+        if self.r >= self.band.rows {
+            return None;
+        }
+        let y = self.band.y0 + i32::from(self.r);
+        if self.k == 0 {
+            self.dirty = self.buf.take_dirty(self.r);
+            if self.uniform.is_none() || !self.dirty.is_empty() {
+                if let Some(acc) = self.buf.acc_row(y) {
+                    self.profile.start_row(&ToneRow::new(y, self.band.x0, acc));
+                }
+            }
+        }
+        let k = self.k;
+        self.k += 1;
+        let x = self.band.x0 + i32::from(k);
+        match self.uniform {
+            Some(c) if !self.dirty.contains(&k) => Some(c),
+            _ => {
+                let lin = self.buf.take_pixel(self.r, k);
+                Some(self.profile.color(x, y, lin))
+            }
+        }
+    }
+}

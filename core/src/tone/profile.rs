@@ -1,0 +1,154 @@
+//! Display profiles: the whole tone stage of one display, from a band's
+//! linear 12-bit pixels to the colours its driver takes, as the renderer
+//! streams them (row by row, left to right, bands top to bottom).
+//!
+//! A profile sees every pixel's position, so ordered dithering (Bayer)
+//! runs through it, and it may keep state across rows and bands, so error
+//! diffusion (Floyd–Steinberg, serpentine) does too: it dithers each row
+//! when the row starts and hands its pixels out in order.
+//!
+//! Every γ format of [`format`](super::format) is a profile (with the
+//! `embedded-graphics` feature, its colour type is the driver's).
+
+use super::dither::{Bayer8, FloydSteinberg};
+use super::format::ToneFormat;
+
+/// One row of a band as the tone stage reads it: frame row `y`, columns
+/// `x0..x0 + len()`, linear 12-bit pixels.
+#[derive(Debug, Clone, Copy)]
+pub struct ToneRow<'r, const C: usize> {
+    /// Frame row.
+    pub y: i32,
+    /// Frame column of the first pixel.
+    pub x0: i32,
+    acc: &'r [i32],
+}
+
+impl<'r, const C: usize> ToneRow<'r, C> {
+    pub(crate) fn new(y: i32, x0: i32, acc: &'r [i32]) -> Self {
+        Self { y, x0, acc }
+    }
+
+    /// Number of pixels.
+    pub fn len(&self) -> usize {
+        self.acc.len() / C.max(1)
+    }
+
+    /// True when the row has no pixels.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The linear 12-bit value of the row's `k`-th pixel (0 past the end).
+    pub fn lin12(&self, k: usize) -> [u16; C] {
+        let mut out = [0u16; C];
+        if let Some(px) = self.acc.get(k * C..k * C + C) {
+            for (o, &a) in out.iter_mut().zip(px) {
+                *o = crate::band::resolve(a);
+            }
+        }
+        out
+    }
+}
+
+/// The tone stage of a display.
+pub trait Profile<const C: usize> {
+    /// What the display's driver takes.
+    type Color: Copy;
+
+    /// A new frame starts.
+    fn start_frame(&mut self) {}
+
+    /// Row `row.y` is about to be asked for, pixel by pixel.
+    fn start_row(&mut self, _row: &ToneRow<'_, C>) {}
+
+    /// The colour of frame pixel `(x, y)` of value `lin` (asked in order
+    /// within the row last started).
+    fn color(&mut self, x: i32, y: i32, lin: [u16; C]) -> Self::Color;
+
+    /// The colour every pixel of value `lin` gets wherever it is, if the
+    /// profile does not depend on position (no dithering): the renderer
+    /// then sends rows nothing was drawn on without resolving them.
+    fn uniform(&self, lin: [u16; C]) -> Option<Self::Color>;
+}
+
+#[cfg(feature = "embedded-graphics")]
+impl<F: ToneFormat<C>, const C: usize> Profile<C> for F {
+    type Color = F::Color;
+
+    #[inline]
+    fn color(&mut self, _x: i32, _y: i32, lin: [u16; C]) -> Self::Color {
+        ToneFormat::color(self, lin)
+    }
+
+    fn uniform(&self, lin: [u16; C]) -> Option<Self::Color> {
+        Some(ToneFormat::color(self, lin))
+    }
+}
+
+#[cfg(feature = "embedded-graphics")]
+impl Profile<1> for Bayer8 {
+    type Color = embedded_graphics_core::pixelcolor::BinaryColor;
+
+    #[inline]
+    fn color(&mut self, x: i32, y: i32, [lin]: [u16; 1]) -> Self::Color {
+        self.is_on(lin, x, y).into()
+    }
+
+    fn uniform(&self, [lin]: [u16; 1]) -> Option<Self::Color> {
+        // Only black and white are the same everywhere.
+        match lin {
+            0 => Some(embedded_graphics_core::pixelcolor::BinaryColor::Off),
+            l if l >= super::LIN_MAX => Some(embedded_graphics_core::pixelcolor::BinaryColor::On),
+            _ => None,
+        }
+    }
+}
+
+/// Floyd–Steinberg error diffusion as a profile: the error row (`i16` per
+/// pixel of the frame width) and a row of results (one byte per pixel)
+/// are the caller's; the error row is carried across the bands of a frame
+/// and cleared when a frame starts.
+#[derive(Debug)]
+pub struct DiffusionProfile<'a> {
+    fs: FloydSteinberg<'a>,
+    bits: &'a mut [bool],
+    x0: i32,
+}
+
+impl<'a> DiffusionProfile<'a> {
+    /// A profile over the caller's error row and result row (both as long
+    /// as the widest row drawn).
+    pub fn new(err: &'a mut [i16], bits: &'a mut [bool]) -> Self {
+        Self {
+            fs: FloydSteinberg::new(err),
+            bits,
+            x0: 0,
+        }
+    }
+}
+
+#[cfg(feature = "embedded-graphics")]
+impl Profile<1> for DiffusionProfile<'_> {
+    type Color = embedded_graphics_core::pixelcolor::BinaryColor;
+
+    fn start_frame(&mut self) {
+        self.fs.reset();
+    }
+
+    fn start_row(&mut self, row: &ToneRow<'_, 1>) {
+        self.x0 = row.x0;
+        self.fs.row_of(row.len(), |k| row.lin12(k)[0], self.bits);
+    }
+
+    #[inline]
+    fn color(&mut self, x: i32, _y: i32, _lin: [u16; 1]) -> Self::Color {
+        let k = x.wrapping_sub(self.x0);
+        let on = usize::try_from(k).ok().and_then(|k| self.bits.get(k)).copied();
+        on.unwrap_or(false).into()
+    }
+
+    fn uniform(&self, _lin: [u16; 1]) -> Option<Self::Color> {
+        None
+    }
+}
