@@ -11,8 +11,9 @@
 #   e.g. bash boards/profile-m0.sh aa_rgb medium
 #        bash boards/profile-m0.sh aa_rgb screen 16
 # The firmware runs only that frame (all of the workload's triangles; see
-# boards/bench-m0/src/cmdline.rs); start-up (stack painting, SysTick
-# calibration) is in the counts too and shows as its own functions.
+# boards/bench-m0/src/cmdline.rs), and the plugin counts only between the
+# firmware's marks bench_profile_on / bench_profile_off around it, so the
+# profile is the measured frame's (start-up and reporting left out).
 #
 # Needs: qemu-system-arm (QEMU 7.2 accepts -plugin), a C compiler (cc),
 # python3, and llvm-nm or nm (rustup component add llvm-tools gives
@@ -49,11 +50,24 @@ if [ ! -e "$plugin" ] || [ "$here/tools/insn-profile.c" -nt "$plugin" ]; then
     cc -shared -fPIC -O2 -Wall -Wextra -std=c11 -o "$plugin" "$here/tools/insn-profile.c"
 fi
 
+# The window marks: entry addresses of the two functions (Thumb bit off).
+nm_tool=$(ls "$(rustc --print sysroot)"/lib/rustlib/*/bin/llvm-nm 2>/dev/null | head -n 1 || true)
+[ -n "$nm_tool" ] || nm_tool=$(command -v llvm-nm || command -v nm || true)
+[ -n "$nm_tool" ] || { echo "profile-m0.sh: no llvm-nm or nm (rustup component add llvm-tools)" >&2; exit 1; }
+mark() {
+    local a
+    a=$("$nm_tool" "$elf" | awk -v s="$1" '$3 == s { print $1; exit }')
+    [ -z "$a" ] || printf '%x' $(( 0x$a & ~1 ))
+}
+on=$(mark bench_profile_on)
+off=$(mark bench_profile_off)
+[ -n "$on" ] && [ -n "$off" ] || { echo "profile-m0.sh: marks not found in $elf" >&2; exit 1; }
+
 out="$build/profile-$renderer-$workload${rows:+-$rows}.txt"
 echo "== qemu: $renderer $workload ${rows:+(bands of $rows rows)}"
 timeout 300 qemu-system-arm -machine mps2-an385 -nographic \
     -semihosting-config enable=on,target=native -icount shift=0 \
-    -plugin "$plugin,out=$out" \
+    -plugin "$plugin,out=$out,on=$on,off=$off" \
     -kernel "$elf" -append "$renderer $workload $rows" \
     | grep -E '^(insns|error)' || { echo "profile-m0.sh: the firmware run failed" >&2; exit 1; }
 echo

@@ -15,9 +15,17 @@
  *
  *     <pc hex> <size> <encoding hex> <executions> <taken>
  *
+ * (This plugin is for Thumb code: see the size correction in
+ * on_translation.)
+ *
  * `taken` is non-zero only for the last instruction of a block. A PC
  * translated more than once (a block entered in its middle, or translated
  * again) has one line per translation; the reader adds them up.
+ *
+ * Window: with `on=ADDR,off=ADDR` (hex guest addresses of two functions'
+ * entries) only blocks entered between an entry of `on` and the next entry
+ * of `off` are counted, so a firmware can mark the code it measures;
+ * without them everything is counted.
  *
  * Limits: a block left in its middle (an exception, or QEMU's icount
  * restart of a block with an I/O access) still counts all its instructions,
@@ -28,7 +36,7 @@
  * Build (no QEMU headers needed, see below):
  *     cc -shared -fPIC -O2 -o libinsn-profile.so insn-profile.c
  * Run:
- *     qemu-system-arm ... -plugin ./libinsn-profile.so,out=FILE
+ *     qemu-system-arm ... -plugin ./libinsn-profile.so,out=FILE[,on=ADDR,off=ADDR]
  *
  * Single-threaded by design: QEMU runs one vCPU thread with -icount.
  */
@@ -106,11 +114,22 @@ struct block {
 static struct block *all_blocks;
 static struct block *last_entered;
 static const char *out_path = "insn-profile.txt";
+static uint64_t window_on = UINT64_MAX, window_off = UINT64_MAX;
+static bool counting = true;
 
 static void on_block_entered(unsigned int vcpu_index, void *userdata)
 {
     struct block *b = userdata;
     (void)vcpu_index;
+    if (b->start == window_on) {
+        counting = true;
+    } else if (b->start == window_off) {
+        counting = false;
+        last_entered = NULL;
+    }
+    if (!counting) {
+        return;
+    }
     b->execs++;
     if (last_entered != NULL && last_entered->fallthrough != b->start) {
         last_entered->taken++;
@@ -139,6 +158,17 @@ static void on_translation(qemu_plugin_id_t id, struct qemu_plugin_tb *tb)
         uint32_t enc = 0;
         for (size_t i = 0; i < size && i < 4; i++) {
             enc |= (uint32_t)bytes[i] << (8 * i);
+        }
+        /*
+         * At the end of a guest page QEMU's Thumb decoder reads the next
+         * halfword too, to see whether a 32-bit instruction crosses the
+         * page, and reports those 4 bytes as the instruction. A Thumb
+         * instruction is 32-bit only when its first halfword starts with
+         * 0b11101, 0b11110 or 0b11111.
+         */
+        if (size == 4 && (enc & 0xFFFF) >> 11 < 0x1D) {
+            size = 2;
+            enc &= 0xFFFF;
         }
         b->insns[k].pc = qemu_plugin_insn_vaddr(insn);
         b->insns[k].size = (uint32_t)size;
@@ -190,6 +220,11 @@ EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_t *info,
     for (int k = 0; k < argc; k++) {
         if (strncmp(argv[k], "out=", 4) == 0) {
             out_path = argv[k] + 4;
+        } else if (strncmp(argv[k], "on=", 3) == 0) {
+            window_on = strtoull(argv[k] + 3, NULL, 16);
+            counting = false;
+        } else if (strncmp(argv[k], "off=", 4) == 0) {
+            window_off = strtoull(argv[k] + 4, NULL, 16);
         } else {
             char msg[256];
             snprintf(msg, sizeof(msg), "insn-profile: unknown argument %s\n",

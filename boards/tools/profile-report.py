@@ -120,7 +120,7 @@ def popcount(v):
 
 def classify(enc, size):
     """(class, base cycles, extra cycles when the branch is taken)."""
-    if size == 4:
+    if size == 4 and (enc & 0xFFFF) >> 11 >= 0x1D:
         hi, lo = enc & 0xFFFF, enc >> 16
         if (hi & 0xF800) == 0xF000 and (lo & 0xD000) == 0xD000:
             return "call", 3, 0  # BL
@@ -234,7 +234,7 @@ def main():
             by_src[inlined.get(pc, "??")][1] += cyc
 
     print(
-        f"{total:,} instructions executed (whole run); estimated Cortex-M0+ cycles "
+        f"{total:,} instructions in the profiled window; estimated Cortex-M0+ cycles "
         f"{cycles_total:,} (CPI {cycles_total / total:.2f})"
     )
     mix = ", ".join(
