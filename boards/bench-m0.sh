@@ -88,10 +88,10 @@ END {
         }
         printf "| %s |\n", mega(screen16[r])
     }
-    printf "\nThe screen (132 triangles of about 436 px covering the frame once) by band height, softedge:\n\n"
+    printf "\nThe screen (132 triangles of about 436 px covering the frame once) by band height (rows per band), softedge:\n\n"
     split("16 8 6 4 3 2 1", bh, " ")
     printf "| renderer "
-    for (k = 1; k <= 7; k++) printf "| %s rows ", bh[k]
+    for (k = 1; k <= 7; k++) printf "| %s ", bh[k]
     printf "|\n| --- |"
     for (k = 1; k <= 7; k++) printf " ---: |"
     printf "\n"

@@ -40,6 +40,9 @@
 //! frame's fixed cost and the first triangle's set-up taken out
 //! ([`Workload::prefix`] gives the first `N`).
 //!
+//! With the feature `render`, [`render`] has the frames both benchmarks
+//! measure (softedge's renderers and embedded-graphics' triangle fill).
+//!
 //! ```
 //! use softedge_workloads::{COUNT, MEDIUM, SCREEN};
 //! assert_eq!(MEDIUM.tris.len(), COUNT);
@@ -55,6 +58,8 @@
 #![deny(missing_docs)]
 
 mod pcg;
+#[cfg(feature = "render")]
+pub mod render;
 
 pub use pcg::Pcg32;
 

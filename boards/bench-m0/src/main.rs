@@ -1,5 +1,6 @@
 //! The Cortex-M0 benchmark: softedge's renderers and embedded-graphics'
-//! aliased triangle fill on the triangles of `softedge-workloads`, 240x240
+//! aliased triangle fill (`softedge_workloads::render`, the frames the host
+//! bench measures too) on the triangles of `softedge-workloads`, 240x240
 //! frames, instructions counted by SysTick under
 //! `qemu-system-arm -machine mps2-an385 -icount shift=0` (thumbv6m code on
 //! the board's Cortex-M3; see `boards/README.md`). `cargo run --release`
@@ -29,16 +30,15 @@
 #![no_main]
 
 mod cmdline;
-mod eg_side;
-mod softedge_side;
-mod targets;
 
 use cortex_m_rt::{entry, exception};
 use softedge_board_common::{self as fw, insns::Counter, Line};
+use softedge_workloads::render::eg_side;
+use softedge_workloads::render::softedge_side::{
+    self, Buffers, ACC_LEN, COVER_LEN, OUT_LEN, ROW_LEN,
+};
+use softedge_workloads::render::targets::{Framebuffer, FB_LEN};
 use softedge_workloads::{Tri, Workload, CLASSES, COUNT, SCREEN};
-
-use softedge_side::{Buffers, ACC_LEN, COVER_LEN, OUT_LEN, ROW_LEN};
-use targets::{Framebuffer, FB_LEN};
 
 /// Band heights of the screen sweep (16 is also every other run's).
 const SCREEN_BANDS: [u16; 7] = [16, 8, 6, 4, 3, 2, 1];

@@ -15,12 +15,12 @@
 
 use core::hint::black_box;
 
+use crate::{Tri, FRAME};
 use softedge::tone::format::{code_row, Gray8Format, Rgb565Format, ToneFormat};
 use softedge::tone::Curve;
 use softedge::{BandBuffer, Bands, RenderStyle, SubPoint, Triangle};
-use softedge_workloads::{Tri, FRAME};
 
-use crate::targets::BandSink;
+use super::targets::BandSink;
 
 /// The tallest band measured (the buffers are sized for it).
 pub const MAX_BAND_ROWS: u16 = 16;

@@ -16,14 +16,14 @@
 
 use core::hint::black_box;
 
+use crate::Tri;
 use embedded_graphics::framebuffer::{buffer_size, Framebuffer as EgFramebuffer};
 use embedded_graphics::pixelcolor::raw::{LittleEndian, RawU16};
 use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::{PrimitiveStyle, Triangle};
-use softedge_workloads::Tri;
 
-use crate::targets::{Framebuffer, FB_SIDE};
+use super::targets::{Framebuffer, FB_SIDE};
 
 /// embedded-graphics' own 240x240 Rgb565 framebuffer.
 pub type StockFramebuffer = EgFramebuffer<
