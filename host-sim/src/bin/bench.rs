@@ -6,9 +6,15 @@
 //! frame, and prints instructions per edge pixel, per swept pixel and per
 //! frame. Instruction counts are deterministic for a given binary; no time
 //! is measured. `bench run C` renders the reference scene once (what
-//! callgrind measures).
+//! callgrind measures). Last, the table of the Cortex-M0 benchmark's
+//! workloads (softedge, embedded-graphics and tiny-skia on the same
+//! triangles; see `bench/workloads.rs`), which `bench workloads` prints
+//! alone.
 
 use std::process::Command;
+
+#[path = "bench/workloads.rs"]
+mod workloads;
 
 use softedge::edge::{AreaMode, CoverSink, EdgeWalk};
 use softedge::geom::FinePoint;
@@ -371,10 +377,17 @@ fn counts<const C: usize>() -> (u64, u64) {
 }
 
 fn callgrind(channels: &str, scene: &str, toggle: Option<&str>) -> Result<u64, String> {
+    callgrind_run(&[channels, scene], toggle)
+}
+
+/// Instructions of `bench run ARGS..` under callgrind, collected only inside
+/// the functions matching `toggle` (all of them without).
+fn callgrind_run(run_args: &[&str], toggle: Option<&str>) -> Result<u64, String> {
     let exe = std::env::current_exe().map_err(|e| e.to_string())?;
     let out = std::env::temp_dir().join(format!(
-        "softedge-bench-{}-{channels}.out",
-        std::process::id()
+        "softedge-bench-{}-{}.out",
+        std::process::id(),
+        run_args.join("-")
     ));
     let mut cmd = Command::new("valgrind");
     cmd.arg("--tool=callgrind")
@@ -384,7 +397,8 @@ fn callgrind(channels: &str, scene: &str, toggle: Option<&str>) -> Result<u64, S
     }
     let status = cmd
         .arg(&exe)
-        .args(["run", channels, scene])
+        .arg("run")
+        .args(run_args)
         .output()
         .map_err(|e| {
             format!("cannot run valgrind ({e}); install it with `apt-get install valgrind`")
@@ -403,8 +417,29 @@ fn callgrind(channels: &str, scene: &str, toggle: Option<&str>) -> Result<u64, S
         .ok_or_else(|| "no totals in callgrind output".into())
 }
 
+/// The workloads table alone (`bench workloads`), or after the rest.
+fn workloads_table() {
+    if let Err(e) = workloads::table(|args| callgrind_run(args, Some("*workload_frame*"))) {
+        eprintln!("bench: {e}");
+        std::process::exit(1);
+    }
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.first().map(String::as_str) == Some("workloads") {
+        workloads_table();
+        return;
+    }
+    if args.first().map(String::as_str) == Some("run")
+        && args.get(1).map(String::as_str) == Some("workload")
+    {
+        if let Err(e) = workloads::run(&args[2..]) {
+            eprintln!("bench: {e}");
+            std::process::exit(1);
+        }
+        return;
+    }
     if args.first().map(String::as_str) == Some("run") {
         let fill = args.get(2).map(String::as_str) == Some("fill");
         if args.get(2).map(String::as_str) == Some("torus") {
@@ -552,4 +587,6 @@ fn main() {
             }
         }
     }
+    println!();
+    workloads_table();
 }

@@ -1,0 +1,249 @@
+//! The Cortex-M0 benchmark: softedge's renderers and embedded-graphics'
+//! aliased triangle fill (`softedge_workloads::render`, the frames the host
+//! bench measures too) on the triangles of `softedge-workloads`, 240x240
+//! frames, instructions counted by SysTick under
+//! `qemu-system-arm -machine mps2-an385 -icount shift=0` (thumbv6m code on
+//! the board's Cortex-M3; see `boards/README.md`). `cargo run --release`
+//! runs it; `bash boards/bench-m0.sh` turns the output into a table.
+//!
+//! Output, one line per measured frame (nothing is printed inside a
+//! measurement):
+//!
+//! ```text
+//! insns_per_tick <num>/<den>
+//! workload <name> <triangles> <twice the area of all> <twice the area of triangles 2..N>
+//! insns <renderer> <workload> <triangles drawn> <band rows> <instructions>
+//! stack_bytes <n>
+//! done
+//! ```
+//!
+//! `<workload>` is `empty` for the frame without triangles; a frame of
+//! embedded-graphics is one 240-row "band" (its framebuffer). A frame that
+//! fails prints `error <renderer> <workload> ...` and the run ends with
+//! exit status 1; a panic prints its location and also exits 1 (the panic
+//! handler of `softedge-board-common`).
+//!
+//! `-append "<renderer> <workload> [rows]"` on QEMU's command line runs
+//! only that frame, with all the workload's triangles (see [`cmdline`]):
+//! what `boards/profile-m0.sh` profiles.
+#![no_std]
+#![no_main]
+
+mod cmdline;
+
+use cortex_m_rt::{entry, exception};
+use softedge_board_common::{self as fw, insns::Counter, Line};
+use softedge_workloads::render::eg_side;
+use softedge_workloads::render::softedge_side::{
+    self, Buffers, ACC_LEN, COVER_LEN, OUT_LEN, ROW_LEN,
+};
+use softedge_workloads::render::targets::{Framebuffer, FB_LEN};
+use softedge_workloads::{Tri, Workload, CLASSES, COUNT, SCREEN};
+
+/// Band heights of the screen sweep (16 is also every other run's).
+const SCREEN_BANDS: [u16; 7] = [16, 8, 6, 4, 3, 2, 1];
+/// Band height of the workload runs.
+const BAND_ROWS: u16 = 16;
+/// What embedded-graphics' framebuffer is reported as: one band of the
+/// whole frame.
+const FRAME_ROWS: u16 = softedge_workloads::FRAME;
+
+#[entry]
+fn main() -> ! {
+    // cortex-m-rt turns these into `&'static mut`, safely (entry runs once).
+    static mut ACC: [i32; ACC_LEN] = [0; ACC_LEN];
+    static mut COVER: [i32; COVER_LEN] = [0; COVER_LEN];
+    static mut OUT16: [u16; OUT_LEN] = [0; OUT_LEN];
+    static mut OUT8: [u8; OUT_LEN] = [0; OUT_LEN];
+    static mut ROW: [[u16; 3]; ROW_LEN] = [[0; 3]; ROW_LEN];
+    static mut FB: [u16; FB_LEN] = [0; FB_LEN];
+    static mut STOCK: eg_side::StockFramebuffer = eg_side::StockFramebuffer::new();
+    fw::stack::paint();
+    let Some(core) = cortex_m::Peripherals::take() else {
+        fw::exit(false)
+    };
+    let counter = Counter::start(core.SYST);
+    let (num, den) = counter.insns_per_tick();
+    Line::new()
+        .text("insns_per_tick ")
+        .dec(num)
+        .text("/")
+        .dec(den)
+        .print();
+    for w in CLASSES.iter().copied().chain([&SCREEN]) {
+        Line::new()
+            .text("workload ")
+            .text(w.name)
+            .text(" ")
+            .dec(w.tris.len() as u64)
+            .text(" ")
+            .dec(w.twice_area())
+            .text(" ")
+            .dec(w.twice_marginal_area())
+            .print();
+    }
+
+    let mut bench = Bench {
+        counter: &counter,
+        selection: cmdline::Selection::read(),
+        ran: 0,
+        ok: true,
+    };
+    let mut bufs = Buffers {
+        acc: ACC,
+        cover: COVER,
+        out16: OUT16,
+        out8: OUT8,
+        row: ROW,
+    };
+    for r in softedge_side::Renderer::ALL {
+        let mut run = |w: &Workload, tris: &[Tri], rows: u16| {
+            bench.run(r.name(), w, tris.len(), rows, || {
+                softedge_side::frame(r, tris, rows, &mut bufs).is_ok()
+            });
+        };
+        if r == softedge_side::Renderer::AaFlatRgbRows {
+            // Only the fixed cost and the screen: the triangles are drawn
+            // as by `AaFlatRgb`; the flush differs.
+            run(&EMPTY, &[], BAND_ROWS);
+            run(&SCREEN, SCREEN.tris, BAND_ROWS);
+            continue;
+        }
+        run(&EMPTY, &[], BAND_ROWS);
+        for w in CLASSES {
+            run(w, w.prefix(1), BAND_ROWS);
+            run(w, w.prefix(COUNT), BAND_ROWS);
+        }
+        for rows in SCREEN_BANDS {
+            run(&SCREEN, SCREEN.tris, rows);
+        }
+    }
+
+    let mut targets = eg_side::Targets {
+        fb: Framebuffer::new(FB),
+        stock: STOCK,
+    };
+    for r in eg_side::Renderer::ALL {
+        let mut run = |w: &Workload, tris: &[Tri]| {
+            bench.run(r.name(), w, tris.len(), FRAME_ROWS, || {
+                eg_side::frame(r, tris, &mut targets);
+                true
+            });
+        };
+        run(&EMPTY, &[]);
+        for w in CLASSES {
+            run(w, w.prefix(1));
+            run(w, w.prefix(COUNT));
+        }
+        run(&SCREEN, SCREEN.tris);
+    }
+
+    Line::new()
+        .text("stack_bytes ")
+        .dec(fw::stack::used_bytes() as u64)
+        .print();
+    let margin_ok = fw::stack::margin_bytes() >= fw::stack::MIN_MARGIN_BYTES;
+    if !margin_ok {
+        Line::new()
+            .text("error stack too close to the statics")
+            .print();
+    }
+    if bench.ran == 0 {
+        Line::new()
+            .text("error no frame matches the selection")
+            .print();
+    }
+    let ok = bench.ok && margin_ok && bench.ran > 0;
+    if ok {
+        Line::new().text("done").print();
+    }
+    fw::exit(ok)
+}
+
+/// The frame without triangles (the fixed cost), as a workload name.
+static EMPTY: Workload = Workload {
+    name: "empty",
+    tris: &[],
+};
+
+/// Measures frames and prints their lines.
+struct Bench<'a> {
+    counter: &'a Counter,
+    selection: cmdline::Selection,
+    /// Frames measured.
+    ran: usize,
+    ok: bool,
+}
+
+impl Bench<'_> {
+    /// Measures `frame` (which returns `false` on failure), drawing `tris`
+    /// triangles of `workload`, and prints
+    /// `insns <renderer> <workload> <triangles> <rows> <n>`; frames the
+    /// selection leaves out are skipped.
+    fn run(
+        &mut self,
+        renderer: &str,
+        workload: &Workload,
+        tris: usize,
+        rows: u16,
+        frame: impl FnOnce() -> bool,
+    ) {
+        if !self
+            .selection
+            .wants(renderer, workload.name, tris, workload.tris.len(), rows)
+        {
+            return;
+        }
+        self.ran += 1;
+        let mut frame_ok = false;
+        let ticks = self.counter.measure(|| {
+            bench_profile_on();
+            frame_ok = frame();
+            bench_profile_off();
+        });
+        let line = if frame_ok {
+            Line::new().text("insns ")
+        } else {
+            self.ok = false;
+            Line::new().text("error ")
+        };
+        line.text(renderer)
+            .text(" ")
+            .text(workload.name)
+            .text(" ")
+            .dec(tris as u64)
+            .text(" ")
+            .dec(u64::from(rows))
+            .text(" ")
+            .dec(self.counter.insns(ticks))
+            .print();
+    }
+}
+
+/// What the profile marks write: a volatile store cannot be optimised
+/// away (an empty function's call would be), and the two values keep LLVM
+/// from merging the two functions into one address.
+static mut PROFILE_MARK: u32 = 0;
+
+/// Entered right before a measured frame: `boards/profile-m0.sh` has the
+/// insn-profile plugin count only from the entry of this function to the
+/// entry of [`bench_profile_off`] (about 10 instructions per frame).
+#[no_mangle]
+#[inline(never)]
+pub extern "C" fn bench_profile_on() {
+    // SAFETY: a plain word only these two functions write (single core).
+    unsafe { core::ptr::addr_of_mut!(PROFILE_MARK).write_volatile(1) }
+}
+
+/// Entered right after a measured frame (see [`bench_profile_on`]).
+#[no_mangle]
+#[inline(never)]
+pub extern "C" fn bench_profile_off() {
+    // SAFETY: as in `bench_profile_on`.
+    unsafe { core::ptr::addr_of_mut!(PROFILE_MARK).write_volatile(2) }
+}
+
+#[exception]
+fn SysTick() {
+    fw::insns::on_wrap();
+}

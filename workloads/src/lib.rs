@@ -1,0 +1,365 @@
+//! # softedge-workloads
+//!
+//! The triangles of the Cortex-M0 benchmark (`boards/bench-m0`) and of the
+//! host bench (`softedge-sim`'s `bench` binary): the same bytes on both,
+//! generated at compile time by `const fn`s from fixed seeds, so a count
+//! measured on one side can be set beside the other's.
+//!
+//! - [`SMALL`], [`MEDIUM`], [`LARGE`]: [`COUNT`] random triangles each, mean
+//!   areas about 27, 437 and 3 900 px² (measured: 28.5, 434.8, 3 814.8),
+//!   inside a [`FRAME`] x [`FRAME`] frame.
+//! - [`SCREEN`]: 132 triangles covering the frame exactly once, an 11 x 6
+//!   grid of cells each split along its diagonal into two triangles of
+//!   about 436 px².
+//!
+//! Every vertex is a whole pixel, so embedded-graphics (integer `Point`s)
+//! can draw the same triangles as softedge (`SubPoint::from_px`). The two
+//! read a vertex differently: softedge's `(x, y)` is the top-left *corner*
+//! of pixel `(x, y)`, embedded-graphics' is the pixel itself (its centre);
+//! the areas below are the exact areas of the triangles with corner
+//! vertices, `|cross| / 2` in px².
+//!
+//! ## How a random triangle is made
+//!
+//! A class has a box side `L` ([`SIDE_SMALL`], ...): the box's top-left
+//! corner is uniform in `0..FRAME-L` on each axis, the three vertices
+//! uniform in the box `[x0, x0+L] x [y0, y0+L]` (integers, so every vertex
+//! lies in `0..=FRAME-1`), and a triangle of zero area is drawn again. The
+//! mean area of a triangle with uniform vertices in a square of side `L` is
+//! `11 L² / 144`, which gives the sides (18, 75, 226 px); the shapes are
+//! those of random triangles, slivers included. Colours are linear 12-bit,
+//! uniform in `0..=4095`, per channel and per vertex. All draws come, in a
+//! fixed order (box x, box y, vertex 0 x, y, vertex 1, vertex 2, then the
+//! nine colours), from one [`Pcg32`] stream per workload.
+//!
+//! ## The marginal cost per pixel
+//!
+//! A benchmark renders a whole frame with `N` = 0, 1 and [`COUNT`]
+//! triangles of a workload; `(insns(COUNT) - insns(1)) /`
+//! [`Workload::marginal_area`] is the cost per pixel of triangle area, the
+//! frame's fixed cost and the first triangle's set-up taken out
+//! ([`Workload::prefix`] gives the first `N`).
+//!
+//! With the feature `render`, [`render`] has the frames both benchmarks
+//! measure (softedge's renderers and embedded-graphics' triangle fill).
+//!
+//! ```
+//! use softedge_workloads::{COUNT, MEDIUM, SCREEN};
+//! assert_eq!(MEDIUM.tris.len(), COUNT);
+//! assert_eq!(MEDIUM.prefix(1).len(), 1);
+//! // Instructions of a frame with 1 and with all triangles, say:
+//! let (one, all) = (3_500_000u64, 580_000_000u64);
+//! let per_px = (all - one) as f64 / MEDIUM.marginal_area() as f64;
+//! assert!(per_px > 600.0 && per_px < 700.0);
+//! assert_eq!(SCREEN.twice_area(), 2 * 240 * 240);
+//! ```
+#![no_std]
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+
+mod pcg;
+#[cfg(feature = "render")]
+pub mod render;
+
+pub use pcg::Pcg32;
+
+/// Width and height of the frame, in pixels.
+pub const FRAME: u16 = 240;
+/// Triangles of each random workload.
+pub const COUNT: usize = 2000;
+/// Box side of [`SMALL`]'s triangles, px: `11 L² / 144 = 24.75` px² before
+/// zero-area triangles are drawn again.
+pub const SIDE_SMALL: u16 = 18;
+/// Box side of [`MEDIUM`]'s triangles, px (`11 L² / 144 = 429.7` px²).
+pub const SIDE_MEDIUM: u16 = 75;
+/// Box side of [`LARGE`]'s triangles, px (`11 L² / 144 = 3 901.8` px²).
+pub const SIDE_LARGE: u16 = 226;
+/// Columns of [`SCREEN`]'s grid.
+pub const SCREEN_COLS: u16 = 11;
+/// Rows of [`SCREEN`]'s grid.
+pub const SCREEN_ROWS: u16 = 6;
+/// The PCG stream (`initseq`) every workload draws from; the workloads
+/// differ by their `initstate` seed.
+const STREAM: u64 = 0x5eed;
+
+/// One triangle: whole-pixel vertices and a linear 12-bit RGB colour per
+/// vertex. Flat renderers use [`flat_rgb`](Self::flat_rgb) (vertex 0's
+/// colour), gray ones [`gray`](Self::gray).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Tri {
+    /// Vertices `[x, y]` in whole pixels, `0..=FRAME`.
+    pub v: [[i16; 2]; 3],
+    /// Linear 12-bit colour `[r, g, b]` of each vertex, `0..=4095`.
+    pub rgb: [[u16; 3]; 3],
+}
+
+impl Tri {
+    const ZERO: Tri = Tri {
+        v: [[0; 2]; 3],
+        rgb: [[0; 3]; 3],
+    };
+
+    /// Twice the exact area in px² (`|cross product|` of two edges).
+    pub const fn twice_area(&self) -> u32 {
+        let [[x0, y0], [x1, y1], [x2, y2]] = self.v;
+        let (x0, y0) = (x0 as i32, y0 as i32);
+        let cross = (x1 as i32 - x0) * (y2 as i32 - y0) - (x2 as i32 - x0) * (y1 as i32 - y0);
+        cross.unsigned_abs()
+    }
+
+    /// The colour of a flat-shaded triangle: vertex 0's.
+    pub const fn flat_rgb(&self) -> [u16; 3] {
+        self.rgb[0]
+    }
+
+    /// The intensity of a flat gray triangle: vertex 0's green.
+    pub const fn gray(&self) -> u16 {
+        self.rgb[0][1]
+    }
+}
+
+/// A named list of triangles.
+#[derive(Debug, Clone, Copy)]
+pub struct Workload {
+    /// Short name, used in the benchmarks' output (`small`, `medium`,
+    /// `large`, `screen`).
+    pub name: &'static str,
+    /// The triangles, drawn in this order.
+    pub tris: &'static [Tri],
+}
+
+impl Workload {
+    /// The first `n` triangles (all of them when `n` is larger).
+    pub fn prefix(&self, n: usize) -> &'static [Tri] {
+        self.tris.get(..n).unwrap_or(self.tris)
+    }
+
+    /// Twice the summed exact area of all triangles, px².
+    pub const fn twice_area(&self) -> u64 {
+        twice_area_sum(self.tris)
+    }
+
+    /// Twice the summed area of triangles `2..=N` (all but the first): the
+    /// denominator of the marginal cost per pixel.
+    pub const fn twice_marginal_area(&self) -> u64 {
+        match self.tris.split_first() {
+            Some((_, rest)) => twice_area_sum(rest),
+            None => 0,
+        }
+    }
+
+    /// Summed area of triangles `2..=N`, px², rounded down.
+    pub const fn marginal_area(&self) -> u64 {
+        self.twice_marginal_area() / 2
+    }
+}
+
+/// Twice the summed exact area of `tris`, px².
+pub const fn twice_area_sum(tris: &[Tri]) -> u64 {
+    let mut sum = 0u64;
+    let mut k = 0;
+    while k < tris.len() {
+        sum += tris[k].twice_area() as u64;
+        k += 1;
+    }
+    sum
+}
+
+/// `n` random triangles with vertices in boxes of side `side` (see the
+/// crate docs), from the stream seeded `seed`.
+const fn random_triangles<const N: usize>(seed: u64, side: u16) -> [Tri; N] {
+    let mut rng = Pcg32::new(seed, STREAM);
+    let mut out = [Tri::ZERO; N];
+    // Box corners in 0..FRAME-side: vertices end at FRAME-1 at most.
+    let corners = (FRAME - side) as u32;
+    let mut k = 0;
+    while k < N {
+        let x0 = rng.below(corners) as i16;
+        let y0 = rng.below(corners) as i16;
+        let mut t = Tri::ZERO;
+        let mut i = 0;
+        while i < 3 {
+            let x = x0 + rng.below(side as u32 + 1) as i16;
+            let y = y0 + rng.below(side as u32 + 1) as i16;
+            t.v[i] = [x, y];
+            i += 1;
+        }
+        if t.twice_area() == 0 {
+            continue;
+        }
+        t.rgb = random_colors(&mut rng);
+        out[k] = t;
+        k += 1;
+    }
+    out
+}
+
+/// Nine uniform linear 12-bit values: `[r, g, b]` of three vertices.
+const fn random_colors(rng: &mut Pcg32) -> [[u16; 3]; 3] {
+    let mut rgb = [[0u16; 3]; 3];
+    let mut i = 0;
+    while i < 9 {
+        rgb[i / 3][i % 3] = rng.below(4096) as u16;
+        i += 1;
+    }
+    rgb
+}
+
+/// Triangles of [`SCREEN`].
+pub const SCREEN_LEN: usize = 2 * SCREEN_COLS as usize * SCREEN_ROWS as usize;
+
+/// The screen: column `i` of the grid spans `[x_i, x_{i+1}]` with
+/// `x_i = round(i * FRAME / 11)` (cells 21 or 22 px wide), row `j` spans
+/// `[40 j, 40 (j + 1)]`; each cell is split along its top-left to
+/// bottom-right diagonal, the upper-right triangle first. Random colours
+/// as for the random workloads.
+const fn screen_triangles(seed: u64) -> [Tri; SCREEN_LEN] {
+    let mut rng = Pcg32::new(seed, STREAM);
+    let mut out = [Tri::ZERO; SCREEN_LEN];
+    let (cols, rows, frame) = (SCREEN_COLS as i32, SCREEN_ROWS as i32, FRAME as i32);
+    let mut k = 0;
+    let mut j = 0;
+    while j < rows {
+        let (y0, y1) = ((j * frame / rows) as i16, ((j + 1) * frame / rows) as i16);
+        let mut i = 0;
+        while i < cols {
+            let x0 = ((2 * i * frame + cols) / (2 * cols)) as i16;
+            let x1 = ((2 * (i + 1) * frame + cols) / (2 * cols)) as i16;
+            out[k] = Tri {
+                v: [[x0, y0], [x1, y0], [x1, y1]],
+                rgb: random_colors(&mut rng),
+            };
+            out[k + 1] = Tri {
+                v: [[x0, y0], [x1, y1], [x0, y1]],
+                rgb: random_colors(&mut rng),
+            };
+            k += 2;
+            i += 1;
+        }
+        j += 1;
+    }
+    out
+}
+
+static SMALL_TRIS: [Tri; COUNT] = random_triangles(27, SIDE_SMALL);
+static MEDIUM_TRIS: [Tri; COUNT] = random_triangles(437, SIDE_MEDIUM);
+static LARGE_TRIS: [Tri; COUNT] = random_triangles(3900, SIDE_LARGE);
+static SCREEN_TRIS: [Tri; SCREEN_LEN] = screen_triangles(132);
+
+/// [`COUNT`] random triangles of mean area about 27 px².
+pub static SMALL: Workload = Workload {
+    name: "small",
+    tris: &SMALL_TRIS,
+};
+/// [`COUNT`] random triangles of mean area about 437 px².
+pub static MEDIUM: Workload = Workload {
+    name: "medium",
+    tris: &MEDIUM_TRIS,
+};
+/// [`COUNT`] random triangles of mean area about 3 900 px².
+pub static LARGE: Workload = Workload {
+    name: "large",
+    tris: &LARGE_TRIS,
+};
+/// The 132-triangle screen covering the frame once.
+pub static SCREEN: Workload = Workload {
+    name: "screen",
+    tris: &SCREEN_TRIS,
+};
+
+/// The three random workloads, small to large.
+pub static CLASSES: [&Workload; 3] = [&SMALL, &MEDIUM, &LARGE];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn mean_area(w: &Workload) -> f64 {
+        w.twice_area() as f64 / 2.0 / w.tris.len() as f64
+    }
+
+    #[test]
+    fn mean_areas_are_those_of_the_size_classes() {
+        for (w, target) in [(&SMALL, 27.0), (&MEDIUM, 437.0), (&LARGE, 3900.0)] {
+            assert_eq!(w.tris.len(), COUNT);
+            let m = mean_area(w);
+            // 2 000 random triangles: the sample mean's standard error is
+            // about 2 % of the mean; 28.5, 434.8 and 3 814.8 are measured.
+            assert!((m / target - 1.0).abs() < 0.06, "{}: {m}", w.name);
+        }
+    }
+
+    #[test]
+    fn workloads_are_reproducible() {
+        // Twice the summed areas, computed by an independent Python
+        // implementation of the same generator (PCG32 from its reference
+        // description): any change to the stream or the draw order shows.
+        assert_eq!(SMALL.twice_area(), 113_965);
+        assert_eq!(MEDIUM.twice_area(), 1_739_248);
+        assert_eq!(LARGE.twice_area(), 15_259_116);
+        assert_eq!(SMALL.tris[0].v, [[185, 13], [183, 13], [180, 10]]);
+        assert_eq!(
+            SMALL.tris[0].rgb,
+            [[257, 1133, 405], [823, 325, 1007], [476, 3924, 2304]]
+        );
+    }
+
+    #[test]
+    fn vertices_lie_in_the_frame_and_no_triangle_is_degenerate() {
+        for w in CLASSES {
+            for t in w.tris {
+                assert!(t.twice_area() > 0);
+                for [x, y] in t.v {
+                    assert!((0..FRAME as i16).contains(&x) && (0..FRAME as i16).contains(&y));
+                }
+                assert!(t.rgb.iter().flatten().all(|&c| c <= 4095));
+            }
+        }
+    }
+
+    #[test]
+    fn marginal_area_leaves_out_the_first_triangle() {
+        for w in CLASSES.iter().copied().chain([&SCREEN]) {
+            let first = u64::from(w.tris[0].twice_area());
+            assert_eq!(w.twice_marginal_area() + first, w.twice_area());
+            assert_eq!(w.prefix(1).len(), 1);
+            assert_eq!(w.prefix(0).len(), 0);
+            assert_eq!(w.prefix(usize::MAX).len(), w.tris.len());
+        }
+    }
+
+    /// Is the pixel centre `(x + 1/2, y + 1/2)` strictly inside `t`?
+    /// (Exact, in doubled coordinates.)
+    fn centre_inside(t: &Tri, x: i32, y: i32) -> bool {
+        let (px, py) = (2 * x + 1, 2 * y + 1);
+        let p = t.v.map(|[vx, vy]| (2 * i32::from(vx), 2 * i32::from(vy)));
+        let side = |a: (i32, i32), b: (i32, i32)| {
+            (i64::from(b.0 - a.0) * i64::from(py - a.1)
+                - i64::from(b.1 - a.1) * i64::from(px - a.0))
+            .signum()
+        };
+        let s = [side(p[0], p[1]), side(p[1], p[2]), side(p[2], p[0])];
+        s.iter().all(|&v| v > 0) || s.iter().all(|&v| v < 0)
+    }
+
+    #[test]
+    fn screen_covers_every_pixel_centre_exactly_once() {
+        assert_eq!(SCREEN.tris.len(), 132);
+        let frame = i32::from(FRAME);
+        assert_eq!(SCREEN.twice_area(), 2 * (frame * frame) as u64);
+        for y in 0..frame {
+            for x in 0..frame {
+                let n = SCREEN
+                    .tris
+                    .iter()
+                    .filter(|t| centre_inside(t, x, y))
+                    .count();
+                assert_eq!(n, 1, "pixel ({x}, {y})");
+            }
+        }
+        for t in SCREEN.tris {
+            let a = f64::from(t.twice_area()) / 2.0;
+            assert!((420.0..=440.0).contains(&a), "{a}");
+        }
+    }
+}

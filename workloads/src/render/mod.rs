@@ -1,0 +1,112 @@
+//! The benchmark's renderers (feature `render`): the frames that the
+//! Cortex-M0 firmware (`boards/bench-m0`) and the host bench
+//! (`softedge-sim`'s `bench` binary) measure, the very same code on both.
+//!
+//! - [`softedge_side`]: every softedge call, in one module (porting the
+//!   benchmark to another softedge API means rewriting that file only).
+//! - [`eg_side`]: embedded-graphics' aliased `Triangle` fill.
+//! - [`targets`]: the displays both draw into (a one-band DMA buffer, a
+//!   240x240 framebuffer), plain memory.
+
+pub mod eg_side;
+pub mod softedge_side;
+pub mod targets;
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use std::boxed::Box;
+    use std::vec;
+
+    use super::eg_side::{self, StockFramebuffer, Targets};
+    use super::softedge_side::{self, Buffers, Renderer, ACC_LEN, COVER_LEN, OUT_LEN, ROW_LEN};
+    use super::targets::{Framebuffer, FB_LEN};
+    use crate::{Tri, CLASSES, SCREEN};
+
+    struct Storage {
+        acc: vec::Vec<i32>,
+        cover: vec::Vec<i32>,
+        out16: vec::Vec<u16>,
+        out8: vec::Vec<u8>,
+        row: Box<[[u16; 3]; ROW_LEN]>,
+    }
+
+    impl Storage {
+        fn new() -> Self {
+            Self {
+                acc: vec![0; ACC_LEN],
+                cover: vec![0; COVER_LEN],
+                out16: vec![0; OUT_LEN],
+                out8: vec![0; OUT_LEN],
+                row: Box::new([[0; 3]; ROW_LEN]),
+            }
+        }
+
+        fn frame(&mut self, r: Renderer, tris: &[Tri], rows: u16) -> bool {
+            let mut bufs = Buffers {
+                acc: &mut self.acc,
+                cover: &mut self.cover,
+                out16: &mut self.out16,
+                out8: &mut self.out8,
+                row: &mut self.row,
+            };
+            softedge_side::frame(r, tris, rows, &mut bufs).is_ok()
+        }
+    }
+
+    #[test]
+    fn every_softedge_renderer_renders_every_workload_at_every_band_height() {
+        let mut s = Storage::new();
+        for r in Renderer::ALL {
+            for w in CLASSES {
+                assert!(s.frame(r, w.prefix(40), 16), "{} {}", r.name(), w.name);
+            }
+            for rows in [16, 8, 6, 4, 3, 2, 1] {
+                assert!(s.frame(r, SCREEN.tris, rows), "{} {rows}", r.name());
+            }
+            assert!(
+                !s.frame(r, SCREEN.tris, 17),
+                "bands over 16 rows are refused"
+            );
+        }
+    }
+
+    #[test]
+    fn flush_and_resolve_row_send_the_same_band() {
+        // The last band of the frame stays in the output buffer.
+        let (mut a, mut b) = (Storage::new(), Storage::new());
+        for rows in [16, 3] {
+            assert!(a.frame(Renderer::AaFlatRgb, SCREEN.tris, rows));
+            assert!(b.frame(Renderer::AaFlatRgbRows, SCREEN.tris, rows));
+            let last_rows = match 240 % rows {
+                0 => rows,
+                r => r,
+            };
+            let n = 240 * usize::from(last_rows);
+            assert_eq!(a.out16[..n], b.out16[..n]);
+            assert!(a.out16[..n].iter().any(|&p| p != 0));
+        }
+    }
+
+    #[test]
+    fn both_framebuffers_get_the_same_pixels() {
+        let mut fb = Box::new([0u16; FB_LEN]);
+        let mut stock = Box::new(StockFramebuffer::new());
+        for w in CLASSES.iter().copied().chain([&SCREEN]) {
+            let mut targets = Targets {
+                fb: Framebuffer::new(&mut fb),
+                stock: &mut stock,
+            };
+            for r in eg_side::Renderer::ALL {
+                eg_side::frame(r, w.prefix(200), &mut targets);
+            }
+            let stock_px: vec::Vec<u16> = targets
+                .stock
+                .data()
+                .chunks_exact(2)
+                .map(|b| u16::from_le_bytes([b[0], b[1]]))
+                .collect();
+            assert_eq!(targets.fb.pixels()[..], stock_px[..], "{}", w.name);
+        }
+    }
+}

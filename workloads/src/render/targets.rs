@@ -1,0 +1,165 @@
+//! The two displays the renderers draw into, both plain RAM.
+//!
+//! - [`BandSink`]: what a DMA flush takes: one band of the frame, the colours
+//!   of one `fill_contiguous` over the band's rectangle copied in order into
+//!   a static buffer of raw pixels (`u16` Rgb565, `u8` Gray8), which a real
+//!   driver would hand to the SPI DMA.
+//! - [`Framebuffer`]: a whole 240x240 Rgb565 frame in RAM, as
+//!   embedded-graphics users drive a TFT without bands; `fill_solid` (what
+//!   the `Triangle` fill calls per scanline) and `clear` fill row slices, so
+//!   embedded-graphics is measured with a good target, not a per-pixel one.
+
+use core::convert::Infallible;
+use core::marker::PhantomData;
+
+use embedded_graphics::pixelcolor::{IntoStorage, Rgb565};
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+
+/// One band of a `width`-wide frame, rows `y0..y0 + rows`, as raw pixels
+/// of colour `C` (`C::Storage`: `u16` for Rgb565, `u8` for Gray8).
+pub struct BandSink<'a, C: IntoStorage> {
+    px: &'a mut [C::Storage],
+    width: u32,
+    height: u32,
+    y0: i32,
+    rows: u32,
+    color: PhantomData<C>,
+}
+
+impl<'a, C: IntoStorage> BandSink<'a, C> {
+    /// A sink over `px` (at least `width * rows` pixels) for the band at
+    /// frame row `y0` of a `width x height` display.
+    pub fn new(px: &'a mut [C::Storage], width: u32, height: u32, y0: i32, rows: u32) -> Self {
+        Self {
+            px,
+            width,
+            height,
+            y0,
+            rows,
+            color: PhantomData,
+        }
+    }
+
+    /// The raw pixels of the band, row after row.
+    pub fn pixels(&self) -> &[C::Storage] {
+        &self.px[..]
+    }
+}
+
+impl<C: IntoStorage> OriginDimensions for BandSink<'_, C> {
+    fn size(&self) -> Size {
+        Size::new(self.width, self.height)
+    }
+}
+
+impl<C> DrawTarget for BandSink<'_, C>
+where
+    C: PixelColor + IntoStorage,
+{
+    type Color = C;
+    type Error = Infallible;
+
+    /// Single pixels (unused by the flush): stored if inside the band.
+    fn draw_iter<I>(&mut self, pixels: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = Pixel<C>>,
+    {
+        for Pixel(p, c) in pixels {
+            let r = p.y - self.y0;
+            if p.x >= 0 && (p.x as u32) < self.width && r >= 0 && (r as u32) < self.rows {
+                let k = r as usize * self.width as usize + p.x as usize;
+                if let Some(slot) = self.px.get_mut(k) {
+                    *slot = c.into_storage();
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The band's flush: the colours of the band's rectangle, in order,
+    /// into the buffer (a DMA transfer's source). Any other rectangle goes
+    /// pixel by pixel.
+    fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = C>,
+    {
+        let band = Rectangle::new(Point::new(0, self.y0), Size::new(self.width, self.rows));
+        if *area != band {
+            return self.draw_iter(area.points().zip(colors).map(|(p, c)| Pixel(p, c)));
+        }
+        for (slot, c) in self.px.iter_mut().zip(colors) {
+            *slot = c.into_storage();
+        }
+        Ok(())
+    }
+}
+
+/// Width and height of [`Framebuffer`].
+pub const FB_SIDE: usize = 240;
+/// Pixels of [`Framebuffer`].
+pub const FB_LEN: usize = FB_SIDE * FB_SIDE;
+
+/// A 240x240 Rgb565 frame in RAM.
+pub struct Framebuffer<'a> {
+    px: &'a mut [u16; FB_LEN],
+}
+
+impl<'a> Framebuffer<'a> {
+    /// A framebuffer over `px`.
+    pub fn new(px: &'a mut [u16; FB_LEN]) -> Self {
+        Self { px }
+    }
+
+    /// The raw Rgb565 pixels, row after row.
+    pub fn pixels(&self) -> &[u16; FB_LEN] {
+        self.px
+    }
+}
+
+impl OriginDimensions for Framebuffer<'_> {
+    fn size(&self) -> Size {
+        Size::new(FB_SIDE as u32, FB_SIDE as u32)
+    }
+}
+
+impl DrawTarget for Framebuffer<'_> {
+    type Color = Rgb565;
+    type Error = Infallible;
+
+    fn draw_iter<I>(&mut self, pixels: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = Pixel<Rgb565>>,
+    {
+        for Pixel(p, c) in pixels {
+            if p.x >= 0 && p.y >= 0 && (p.x as usize) < FB_SIDE && (p.y as usize) < FB_SIDE {
+                if let Some(slot) = self.px.get_mut(p.y as usize * FB_SIDE + p.x as usize) {
+                    *slot = c.into_storage();
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Clipped to the frame, then one slice fill per row.
+    fn fill_solid(&mut self, area: &Rectangle, color: Rgb565) -> Result<(), Self::Error> {
+        let area = area.intersection(&self.bounding_box());
+        let Some(bottom_right) = area.bottom_right() else {
+            return Ok(());
+        };
+        let raw = color.into_storage();
+        let (x0, x1) = (area.top_left.x as usize, bottom_right.x as usize + 1);
+        for y in area.top_left.y as usize..=bottom_right.y as usize {
+            let row = y * FB_SIDE;
+            if let Some(span) = self.px.get_mut(row + x0..row + x1) {
+                span.fill(raw);
+            }
+        }
+        Ok(())
+    }
+
+    fn clear(&mut self, color: Rgb565) -> Result<(), Self::Error> {
+        self.px.fill(color.into_storage());
+        Ok(())
+    }
+}
