@@ -64,11 +64,11 @@ $1 == "insns" {
     else all[r, w] = $6
 }
 END {
-    label["aa_rgb"] = "softedge AA flat RGB, Rgb565 (`flush`)"
-    label["aa_gouraud"] = "softedge AA Gouraud RGB, Rgb565 (`flush`)"
-    label["aa_gray"] = "softedge AA gray, Gray8 (`flush`)"
-    label["aliased_rgb"] = "softedge aliased flat RGB, Rgb565 (`flush`)"
-    label["aa_rgb_rows"] = "softedge AA flat RGB, Rgb565 (`resolve_row` + `code_row`)"
+    label["aa_rgb"] = "softedge AA flat RGB, Rgb565"
+    label["aa_gouraud"] = "softedge AA Gouraud RGB, Rgb565"
+    label["aa_gray"] = "softedge AA gray, Gray8"
+    label["aliased_rgb"] = "softedge aliased flat RGB, Rgb565"
+    label["aa_rgb_nocache"] = "softedge AA flat RGB, Rgb565, no walk cache"
     label["eg_fill"] = "e-g `Triangle` fill, framebuffer with slice `fill_solid`"
     label["eg_stock_fb"] = "e-g `Triangle` fill, e-g `Framebuffer` (`draw_iter`)"
     split("small medium large", cls, " ")

@@ -7,16 +7,52 @@
 //! give 0 for a zero divisor (or the one overflowing quotient), which no
 //! caller produces.
 
-/// `floor(n / d)` for `d > 0`; 0 if `d == 0`.
+/// `(floor(n / d), n - d * floor(n / d))` for `d > 0`; `(0, 0)` if `d <= 0`.
+///
+/// One division for both (on the Cortex-M0 a library call), in 32 bits
+/// when both operands fit: a 64-bit division costs several times more.
 #[inline]
-pub(crate) fn div_floor(n: i64, d: i64) -> i64 {
-    n.checked_div_euclid(d).unwrap_or(0)
+pub(crate) fn divmod_floor(n: i64, d: i64) -> (i64, i64) {
+    if d <= 0 {
+        return (0, 0);
+    }
+    let (q, r) = match (i32::try_from(n), i32::try_from(d)) {
+        (Ok(n32), Ok(d32)) if n32 != i32::MIN => {
+            let (q, r) = (n32 / d32, n32 % d32);
+            (i64::from(q), i64::from(r))
+        }
+        _ => (n / d, n % d),
+    };
+    if r < 0 {
+        (q - 1, r + d)
+    } else {
+        (q, r)
+    }
 }
 
-/// `n - d * floor(n / d)` (in `0..d`) for `d > 0`; 0 if `d == 0`.
+/// `floor(n / d)` for `d > 0`; 0 if `d <= 0`.
+#[inline]
+pub(crate) fn div_floor(n: i64, d: i64) -> i64 {
+    divmod_floor(n, d).0
+}
+
+/// `n - d * floor(n / d)` (in `0..d`) for `d > 0`; 0 if `d <= 0`.
 #[inline]
 pub(crate) fn rem_floor(n: i64, d: i64) -> i64 {
-    n.checked_rem_euclid(d).unwrap_or(0)
+    divmod_floor(n, d).1
+}
+
+/// `(n / d, n % d)` for `d > 0` (`(0, 0)` for `d == 0`), in 32 bits when
+/// both fit.
+#[inline]
+pub(crate) fn udivmod(n: u64, d: u64) -> (u64, u64) {
+    if d == 0 {
+        return (0, 0);
+    }
+    match (u32::try_from(n), u32::try_from(d)) {
+        (Ok(n32), Ok(d32)) => (u64::from(n32 / d32), u64::from(n32 % d32)),
+        _ => (n / d, n % d),
+    }
 }
 
 /// `ceil(n / d)` for `d > 0`; 0 if `d == 0`.
@@ -35,6 +71,34 @@ pub(crate) fn limit(v: i64, lo: i64, hi: i64) -> i64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn divmod_agrees_with_euclid_on_both_paths() {
+        for n in [
+            -(1i64 << 40) - 7,
+            -1_000_001,
+            -7,
+            -1,
+            0,
+            1,
+            7,
+            1_000_001,
+            1 << 40,
+            i64::from(i32::MIN),
+            i64::from(i32::MAX),
+        ] {
+            for d in [1i64, 2, 3, 16, 1023, 1 << 20, (1 << 33) + 5] {
+                assert_eq!(
+                    divmod_floor(n, d),
+                    (n.div_euclid(d), n.rem_euclid(d)),
+                    "{n} / {d}"
+                );
+                let (un, ud) = (n.unsigned_abs(), d as u64);
+                assert_eq!(udivmod(un, ud), (un / ud, un % ud));
+            }
+        }
+        assert_eq!(udivmod(5, 0), (0, 0));
+    }
 
     #[test]
     fn floors_like_div_euclid_and_never_panics() {

@@ -11,7 +11,7 @@ pub struct BandMemory {
     pub rows: u16,
     /// The accumulator: one `i32` per channel per pixel.
     pub acc: usize,
-    /// The cover scratch: one `i32` per pixel plus two per row.
+    /// The cover scratch: one `i32` per pixel plus four per row.
     pub cover: usize,
     /// The z-buffer's depths: one `u16` per pixel.
     pub depth: usize,
@@ -95,10 +95,10 @@ mod tests {
         let m = band_memory(240, 3, 16);
         assert_eq!(
             (m.acc, m.cover, m.depth, m.covered),
-            (46_080, 15_488, 7_680, 7_680)
+            (46_080, 15_616, 7_680, 7_680)
         );
-        assert_eq!(m.zbuffer(), 76_928);
+        assert_eq!(m.zbuffer(), 77_056);
         let one = band_memory(240, 3, 1);
-        assert_eq!(one.zbuffer(), 2_880 + 968 + 480 + 480);
+        assert_eq!(one.zbuffer(), 2_880 + 976 + 480 + 480);
     }
 }

@@ -281,6 +281,7 @@ fn draw_error_text(error: softedge::DrawError) -> String {
         softedge::DrawError::SelfIntersecting => {
             "the polygon intersects itself (two of its edges touch or cross)".into()
         }
+        other => format!("{other:?}"),
     }
 }
 

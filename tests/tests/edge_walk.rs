@@ -342,15 +342,16 @@ fn resumed_walk_equals_fresh_walks_and_the_whole_walk() {
                         continue;
                     };
                     let mut whole = Recorder::default();
-                    base.clone().walk(full.clone(), &mut whole);
+                    { base }.walk(full.clone(), &mut whole);
                     let mut resumed = Recorder::default();
                     let mut fresh = Recorder::default();
-                    let mut w = base.clone();
+                    let mut w = base;
                     let mut y = full.start;
                     while y < full.end {
                         let rows = y..(y + band).min(full.end);
                         w.walk(rows.clone(), &mut resumed);
-                        base.clone().walk(rows, &mut fresh);
+                        // A fresh copy of the set-up walk: started over.
+                        { base }.walk(rows, &mut fresh);
                         y += band;
                     }
                     let (lo, hi) = (columns.start, columns.end - 1);

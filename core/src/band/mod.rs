@@ -219,7 +219,11 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         Ok(buf)
     }
 
-    fn new_unreset(acc: &'a mut [i32], cover: &'a mut [i32], band: Band) -> Result<Self, BandError> {
+    fn new_unreset(
+        acc: &'a mut [i32],
+        cover: &'a mut [i32],
+        band: Band,
+    ) -> Result<Self, BandError> {
         let limit = crate::geom::COORD_LIMIT_PX as u32;
         let y_ok = band.y0.unsigned_abs() <= limit && band.x0.unsigned_abs() <= limit;
         if band.width == 0 || band.rows == 0 || band.width > MAX_WIDTH || !y_ok || C == 0 {
@@ -260,8 +264,10 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
             return;
         };
         let fill = bg.map(|b| i32::from(b) << COVER_BITS);
-        for px in acc.chunks_exact_mut(C) {
-            px.copy_from_slice(&fill);
+        for px in acc.chunks_mut(C) {
+            if let Ok(px) = <&mut [i32; C]>::try_from(px) {
+                *px = fill;
+            }
         }
         let w = usize::from(self.band.width);
         for r in 0..usize::from(self.band.rows) {
@@ -366,7 +372,8 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         let c = c.max(0) as usize;
         let w = w as usize;
         let start = r as usize * (w + ROW_EXTRA);
-        if let Some([deltas @ .., lo, hi, _, _]) = self.cover.get_mut(start..start + w + ROW_EXTRA) {
+        if let Some([deltas @ .., lo, hi, _, _]) = self.cover.get_mut(start..start + w + ROW_EXTRA)
+        {
             if let Some(d) = deltas.get_mut(c) {
                 *d = d.wrapping_add(delta);
             }
@@ -376,22 +383,40 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
     }
 
     /// Records an edge pixel's area as a pair of cover changes: `+area` at
-    /// the pixel, `-area` right of it.
+    /// the pixel, `-area` right of it (dropped at the band's right end).
     #[inline]
     pub(crate) fn add_area(&mut self, x: i32, y: i32, area: i32) {
-        let c = x.saturating_sub(self.band.x0);
-        if c < 0 || c >= i32::from(self.band.width) {
+        let w = i32::from(self.band.width);
+        let r = y.wrapping_sub(self.band.y0);
+        let c = x.wrapping_sub(self.band.x0);
+        if r < 0 || r >= i32::from(self.band.rows) || c < 0 || c >= w {
             return;
         }
-        self.add_cover(x, y, area);
-        self.add_cover(x.saturating_add(1), y, area.wrapping_neg());
+        let (c, w) = (c as usize, w as usize);
+        let start = r as usize * (w + ROW_EXTRA);
+        if let Some([deltas @ .., lo, hi, _, _]) = self.cover.get_mut(start..start + w + ROW_EXTRA)
+        {
+            if let Some(d) = deltas.get_mut(c) {
+                *d = d.wrapping_add(area);
+            }
+            let right = if let Some(d) = deltas.get_mut(c + 1) {
+                *d = d.wrapping_sub(area);
+                c + 1
+            } else {
+                c
+            };
+            *lo = (*lo).min(c as i32);
+            *hi = (*hi).max(right as i32);
+        }
     }
 
     /// Empties row `r` of the cover scratch and its extents.
     fn reset_row(&mut self, r: usize) {
         let w = usize::from(self.band.width);
         let start = r * (w + ROW_EXTRA);
-        if let Some([deltas @ .., lo, hi, dlo, dhi]) = self.cover.get_mut(start..start + w + ROW_EXTRA) {
+        if let Some([deltas @ .., lo, hi, dlo, dhi]) =
+            self.cover.get_mut(start..start + w + ROW_EXTRA)
+        {
             deltas.iter_mut().for_each(|c| *c = 0);
             *lo = i32::MAX;
             *hi = i32::MIN;
@@ -440,11 +465,54 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         }
     }
 
-    /// The drawn columns of band row `r`, forgotten (the row is about to be
-    /// sent and reset).
-    pub(crate) fn take_dirty(&mut self, r: u16) -> core::ops::Range<u16> {
-        let w = usize::from(self.band.width);
-        let at = usize::from(r) * (w + ROW_EXTRA) + w + 2;
+    /// The band split for its flush: the accumulator, the drawn extents of
+    /// its rows, and the background in accumulator units.
+    pub(crate) fn flush_parts(&mut self) -> FlushParts<'_, C> {
+        let n = Self::acc_len(self.band.width, self.band.rows);
+        let acc = match self.acc.get_mut(..n) {
+            Some(a) => a,
+            None => &mut [],
+        };
+        FlushParts {
+            acc,
+            extents: DrawnExtents {
+                cover: &mut *self.cover,
+                width: usize::from(self.band.width),
+                y0: self.band.y0,
+            },
+            background: self.background.map(|b| i32::from(b) << COVER_BITS),
+        }
+    }
+
+    /// The frame rows `y_lo..y_hi` clipped to the band (for the sweeps).
+    fn rows_in_band(&self, y_lo: i32, y_hi: i32) -> core::ops::Range<i32> {
+        let end = self.band.y0 + i32::from(self.band.rows);
+        y_lo.max(self.band.y0)..y_hi.min(end)
+    }
+}
+
+/// A band taken apart to be sent ([`BandBuffer::flush_parts`]).
+pub(crate) struct FlushParts<'p, const C: usize> {
+    pub acc: &'p mut [i32],
+    pub extents: DrawnExtents<'p>,
+    pub background: [i32; C],
+}
+
+/// The drawn extents of a band's rows, read once each as the row is sent.
+pub(crate) struct DrawnExtents<'p> {
+    cover: &'p mut [i32],
+    width: usize,
+    y0: i32,
+}
+
+impl DrawnExtents<'_> {
+    /// The drawn columns of frame row `y`, forgotten.
+    pub(crate) fn take(&mut self, y: i32) -> core::ops::Range<u16> {
+        let w = self.width;
+        let Ok(r) = usize::try_from(y.wrapping_sub(self.y0)) else {
+            return 0..0;
+        };
+        let at = r * (w + ROW_EXTRA) + w + 2;
         match self.cover.get_mut(at..at + 2) {
             Some([dlo, dhi]) => {
                 let out = (*dlo).clamp(0, w as i32) as u16..(*dhi).clamp(0, w as i32) as u16;
@@ -453,28 +521,6 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
             }
             _ => 0..0,
         }
-    }
-
-    /// The linear value of band pixel `(k, r)` (band-relative), its
-    /// accumulator reset to the background.
-    #[inline]
-    pub(crate) fn take_pixel(&mut self, r: u16, k: u16) -> [u16; C] {
-        let w = usize::from(self.band.width);
-        let i = (usize::from(r) * w + usize::from(k)) * C;
-        let mut out = [0u16; C];
-        if let Some(px) = self.acc.get_mut(i..i + C) {
-            for ((o, a), b) in out.iter_mut().zip(px.iter_mut()).zip(self.background) {
-                *o = resolve(*a);
-                *a = i32::from(b) << COVER_BITS;
-            }
-        }
-        out
-    }
-
-    /// The frame rows `y_lo..y_hi` clipped to the band (for the sweeps).
-    fn rows_in_band(&self, y_lo: i32, y_hi: i32) -> core::ops::Range<i32> {
-        let end = self.band.y0 + i32::from(self.band.rows);
-        y_lo.max(self.band.y0)..y_hi.min(end)
     }
 }
 
@@ -547,7 +593,14 @@ impl SweepRow<'_> {
 #[inline]
 pub(crate) fn resolve(acc: i32) -> u16 {
     let v = ((acc >> (COVER_BITS - 1)) + 1) >> 1;
-    v.clamp(0, i32::from(LIN_MAX)) as u16
+    // One unsigned compare in the common case.
+    if v as u32 <= u32::from(LIN_MAX) {
+        v as u16
+    } else if v < 0 {
+        0
+    } else {
+        LIN_MAX
+    }
 }
 
 #[cfg(test)]

@@ -129,14 +129,15 @@ impl<const C: usize> BandBuffer<'_, C> {
             let mut c: i32 = 0;
             let mut x = lo;
             let mut drawn = (usize::MAX, 0);
+            let changes = deltas.get_mut(..=hi).unwrap_or_default();
             while x <= hi {
-                if let Some(d) = deltas.get_mut(x) {
+                if let Some(d) = changes.get_mut(x) {
                     c = c.wrapping_add(core::mem::take(d));
                 }
                 // The run lasts to the next change, or to the band's end if
                 // coverage remains after the last one.
                 let mut next = x + 1;
-                while next <= hi && deltas.get(next) == Some(&0) {
+                while let Some(&0) = changes.get(next) {
                     next += 1;
                 }
                 let end = if next > hi && c != 0 { w } else { next };
@@ -186,11 +187,11 @@ fn run<const C: usize>(
         (ComposeOp::Over(_), Paint::Flat(color)) => {
             let f = color.map(|v| i32::from(v) << COVER_BITS);
             if whole {
-                for p in px.chunks_exact_mut(C) {
-                    p.copy_from_slice(&f);
+                for p in pixels::<C>(px) {
+                    *p = f;
                 }
             } else {
-                for p in px.chunks_exact_mut(C) {
+                for p in pixels::<C>(px) {
                     for ch in 0..C {
                         p[ch] += mul_share(f[ch] - p[ch], k);
                     }
@@ -199,7 +200,7 @@ fn run<const C: usize>(
         }
         (ComposeOp::Over(_), Paint::Plane(plane)) => {
             let mut v = plane_at(plane, x, y);
-            for p in px.chunks_exact_mut(C) {
+            for p in pixels::<C>(px) {
                 for ch in 0..C {
                     if whole {
                         p[ch] = v[ch];
@@ -212,12 +213,16 @@ fn run<const C: usize>(
         }
         (ComposeOp::Add(_) | ComposeOp::Accumulate(_), Paint::Flat(color)) => {
             // (I - bg) k exactly: below 2^12 * 2^16, one product per run.
-            let base = if matches!(op, ComposeOp::Add(_)) { bg } else { [0; C] };
+            let base = if matches!(op, ComposeOp::Add(_)) {
+                bg
+            } else {
+                [0; C]
+            };
             let mut add = [0i32; C];
             for ch in 0..C {
                 add[ch] = (i32::from(color[ch]) - i32::from(base[ch])) * k;
             }
-            for p in px.chunks_exact_mut(C) {
+            for p in pixels::<C>(px) {
                 for ch in 0..C {
                     p[ch] = p[ch].saturating_add(add[ch]);
                 }
@@ -225,9 +230,13 @@ fn run<const C: usize>(
         }
         (ComposeOp::Add(_) | ComposeOp::Accumulate(_), Paint::Plane(plane)) => {
             let mut v = plane_at(plane, x, y);
-            let base = if matches!(op, ComposeOp::Add(_)) { bg } else { [0; C] };
+            let base = if matches!(op, ComposeOp::Add(_)) {
+                bg
+            } else {
+                [0; C]
+            };
             let bgf = base.map(|b| i32::from(b) << COVER_BITS);
-            for p in px.chunks_exact_mut(C) {
+            for p in pixels::<C>(px) {
                 for ch in 0..C {
                     let rel = v[ch] - bgf[ch];
                     let add = if whole { rel } else { mul_share(rel, k) };
@@ -237,7 +246,7 @@ fn run<const C: usize>(
             }
         }
         (ComposeOp::Attenuate(_), _) => {
-            for p in px.chunks_exact_mut(C) {
+            for p in pixels::<C>(px) {
                 for ch in 0..C {
                     p[ch] = if whole {
                         0
@@ -247,6 +256,25 @@ fn run<const C: usize>(
                 }
             }
         }
+    }
+}
+
+/// The pixels of a run, `C` values each. (`chunks_exact` would divide the
+/// run's length by `C`: a library call on the Cortex-M0.)
+#[inline]
+fn pixels<const C: usize>(px: &mut [i32]) -> Pixels<'_, C> {
+    Pixels(px)
+}
+
+struct Pixels<'p, const C: usize>(&'p mut [i32]);
+
+impl<'p, const C: usize> Iterator for Pixels<'p, C> {
+    type Item = &'p mut [i32; C];
+    #[inline]
+    fn next(&mut self) -> Option<Self::Item> {
+        let (p, rest) = core::mem::take(&mut self.0).split_first_chunk_mut::<C>()?;
+        self.0 = rest;
+        Some(p)
     }
 }
 

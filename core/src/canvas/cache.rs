@@ -35,6 +35,8 @@ pub struct WalkSlot<const C: usize> {
     entry: Entry<C>,
 }
 
+// Slots are uniform on purpose: a slot holds any of them.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone)]
 enum Entry<const C: usize> {
     Empty,
@@ -95,10 +97,19 @@ fn key(serial: u32, item: Item) -> u64 {
     (u64::from(serial) << 32) | tag | u64::from(k & 0x7fff_ffff)
 }
 
+/// The key's home slot among `len`: a 32-bit multiplicative hash of its
+/// two halves, mapped to `0..len` by a multiply and a shift (no division:
+/// a library call on the Cortex-M0).
 fn home(key: u64, len: usize) -> usize {
-    // Fibonacci hashing of the key's two halves.
-    let h = (key ^ (key >> 29)).wrapping_mul(0x9e37_79b9_7f4a_7c15);
-    ((h >> 32) as usize) % len.max(1)
+    let h = ((key as u32) ^ ((key >> 32) as u32).rotate_left(13)).wrapping_mul(0x9e37_79b9);
+    let h = h ^ (h >> 15);
+    ((u64::from(h) * (len as u64)) >> 32) as usize
+}
+
+/// The slots a key may be in: its home and the next few, wrapping.
+fn probes(key: u64, len: usize) -> impl Iterator<Item = usize> {
+    let h = home(key, len);
+    (0..PROBE.min(len)).map(move |i| if h + i >= len { h + i - len } else { h + i })
 }
 
 fn edge_made_of(p0: FinePoint, p1: FinePoint, tag: i32) -> [i32; 6] {
@@ -125,7 +136,9 @@ impl<'a, const C: usize> WalkCache<'a, C> {
     /// Forgets every entry (a new frame).
     pub fn clear(&mut self) {
         for s in self.slots.iter_mut() {
-            *s = WalkSlot::EMPTY;
+            s.key = u64::MAX;
+            s.last_row = i32::MIN;
+            s.entry = Entry::Empty;
         }
         self.hits = 0;
         self.misses = 0;
@@ -138,63 +151,56 @@ impl<'a, const C: usize> WalkCache<'a, C> {
     }
 
     fn find(&mut self, k: u64, made_of: &[i32; 6]) -> Option<usize> {
-        let n = self.slots.len();
-        if n == 0 {
-            return None;
-        }
-        let h = home(k, n);
-        (0..PROBE.min(n))
-            .map(|i| (h + i) % n)
-            .find(|&i| self.slots.get(i).is_some_and(|s| s.key == k && s.made_of == *made_of))
+        probes(k, self.slots.len()).find(|&i| {
+            self.slots
+                .get(i)
+                .is_some_and(|s| s.key == k && s.made_of == *made_of)
+        })
     }
 
     /// A slot for a new entry: empty, or holding an entry not needed from
     /// row `row` on.
     fn free(&mut self, k: u64, row: i32) -> Option<usize> {
-        let n = self.slots.len();
-        if n == 0 {
+        probes(k, self.slots.len()).find(|&i| self.slots.get(i).is_some_and(|s| s.last_row < row))
+    }
+
+    /// Stores an entry in a free slot, and says which; `None` (a miss)
+    /// when none is free.
+    fn place(
+        &mut self,
+        k: u64,
+        made_of: [i32; 6],
+        row: i32,
+        last_row: i32,
+        entry: Entry<C>,
+    ) -> Option<usize> {
+        let Some(i) = self.free(k, row) else {
+            self.misses += 1;
             return None;
-        }
-        let h = home(k, n);
-        (0..PROBE.min(n))
-            .map(|i| (h + i) % n)
-            .find(|&i| self.slots.get(i).is_some_and(|s| s.last_row < row))
+        };
+        let s = self.slots.get_mut(i)?;
+        *s = WalkSlot {
+            key: k,
+            made_of,
+            last_row,
+            entry,
+        };
+        Some(i)
     }
 
-    fn put(&mut self, k: u64, made_of: [i32; 6], row: i32, last_row: i32, entry: Entry<C>) {
-        match self.free(k, row) {
-            Some(i) => {
-                if let Some(s) = self.slots.get_mut(i) {
-                    *s = WalkSlot {
-                        key: k,
-                        made_of,
-                        last_row,
-                        entry,
-                    };
-                }
-            }
-            None => self.misses += 1,
-        }
-    }
-
-    /// Takes the stored walk of edge `item` of shape `serial`, if it was
-    /// made from `p0 -> p1` (`tag` tells walk kinds apart).
-    pub(crate) fn take_walk(
+    /// The stored walk of edge `edge` of shape `serial`, if it was made
+    /// from `p0 -> p1` (`tag` tells walk kinds apart): walked in place.
+    pub(crate) fn walk(
         &mut self,
         serial: u32,
         edge: u32,
         p0: FinePoint,
         p1: FinePoint,
         tag: i32,
-    ) -> Option<EdgeWalk> {
-        let k = key(serial, Item::Edge(edge));
-        let i = self.find(k, &edge_made_of(p0, p1, tag))?;
-        let s = self.slots.get_mut(i)?;
-        let entry = core::mem::replace(&mut s.entry, Entry::Empty);
-        s.key = u64::MAX;
-        s.last_row = i32::MIN;
-        match entry {
-            Entry::Walk(w) => {
+    ) -> Option<&mut EdgeWalk> {
+        let i = self.find(key(serial, Item::Edge(edge)), &edge_made_of(p0, p1, tag))?;
+        match self.slots.get_mut(i).map(|s| &mut s.entry) {
+            Some(Entry::Walk(w)) => {
                 self.hits += 1;
                 Some(w)
             }
@@ -202,9 +208,11 @@ impl<'a, const C: usize> WalkCache<'a, C> {
         }
     }
 
-    /// Stores the walk of an edge that goes on below row `row`.
-    #[allow(clippy::too_many_arguments)]
-    pub(crate) fn put_walk(
+    /// Stores a new walk of an edge that goes on below row `row`, and lends
+    /// it back to be walked there; the walk itself when no slot is free.
+    // The walk is moved either way; an `Err` of its size costs nothing more.
+    #[allow(clippy::too_many_arguments, clippy::result_large_err)]
+    pub(crate) fn place_walk(
         &mut self,
         serial: u32,
         edge: u32,
@@ -213,28 +221,37 @@ impl<'a, const C: usize> WalkCache<'a, C> {
         tag: i32,
         row: i32,
         walk: EdgeWalk,
-    ) {
+    ) -> Result<&mut EdgeWalk, EdgeWalk> {
         let last = walk.rows().end - 1;
         let k = key(serial, Item::Edge(edge));
-        self.put(k, edge_made_of(p0, p1, tag), row, last, Entry::Walk(walk));
+        let Some(i) = self.free(k, row) else {
+            self.misses += 1;
+            return Err(walk);
+        };
+        let Some(s) = self.slots.get_mut(i) else {
+            return Err(walk);
+        };
+        s.key = k;
+        s.made_of = edge_made_of(p0, p1, tag);
+        s.last_row = last;
+        s.entry = Entry::Walk(walk);
+        match &mut s.entry {
+            Entry::Walk(w) => Ok(w),
+            _ => Err(walk),
+        }
     }
 
-    /// Like [`take_walk`](Self::take_walk), for an aliased walk.
-    pub(crate) fn take_aliased(
+    /// Like [`walk`](Self::walk), for an aliased walk.
+    pub(crate) fn aliased(
         &mut self,
         serial: u32,
         edge: u32,
         p0: FinePoint,
         p1: FinePoint,
-    ) -> Option<AliasedWalk> {
-        let k = key(serial, Item::Edge(edge));
-        let i = self.find(k, &edge_made_of(p0, p1, -1))?;
-        let s = self.slots.get_mut(i)?;
-        let entry = core::mem::replace(&mut s.entry, Entry::Empty);
-        s.key = u64::MAX;
-        s.last_row = i32::MIN;
-        match entry {
-            Entry::Aliased(w) => {
+    ) -> Option<&mut AliasedWalk> {
+        let i = self.find(key(serial, Item::Edge(edge)), &edge_made_of(p0, p1, -1))?;
+        match self.slots.get_mut(i).map(|s| &mut s.entry) {
+            Some(Entry::Aliased(w)) => {
                 self.hits += 1;
                 Some(w)
             }
@@ -242,8 +259,9 @@ impl<'a, const C: usize> WalkCache<'a, C> {
         }
     }
 
-    /// Like [`put_walk`](Self::put_walk), for an aliased walk.
-    pub(crate) fn put_aliased(
+    /// Like [`place_walk`](Self::place_walk), for an aliased walk.
+    #[allow(clippy::result_large_err)]
+    pub(crate) fn place_aliased(
         &mut self,
         serial: u32,
         edge: u32,
@@ -251,15 +269,34 @@ impl<'a, const C: usize> WalkCache<'a, C> {
         p1: FinePoint,
         row: i32,
         walk: AliasedWalk,
-    ) {
+    ) -> Result<&mut AliasedWalk, AliasedWalk> {
         let last = walk.rows().end - 1;
         let k = key(serial, Item::Edge(edge));
-        self.put(k, edge_made_of(p0, p1, -1), row, last, Entry::Aliased(walk));
+        let Some(i) = self.free(k, row) else {
+            self.misses += 1;
+            return Err(walk);
+        };
+        let Some(s) = self.slots.get_mut(i) else {
+            return Err(walk);
+        };
+        s.key = k;
+        s.made_of = edge_made_of(p0, p1, -1);
+        s.last_row = last;
+        s.entry = Entry::Aliased(walk);
+        match &mut s.entry {
+            Entry::Aliased(w) => Ok(w),
+            _ => Err(walk),
+        }
     }
 
     /// The stored plane `index` of shape `serial`, if made from
     /// `made_of`.
-    pub(crate) fn plane(&mut self, serial: u32, index: u32, made_of: &[i32; 6]) -> Option<Plane<C>> {
+    pub(crate) fn plane(
+        &mut self,
+        serial: u32,
+        index: u32,
+        made_of: &[i32; 6],
+    ) -> Option<Plane<C>> {
         let k = key(serial, Item::Plane(index));
         let i = self.find(k, made_of)?;
         match self.slots.get(i).map(|s| &s.entry) {
@@ -282,6 +319,6 @@ impl<'a, const C: usize> WalkCache<'a, C> {
         plane: Plane<C>,
     ) {
         let k = key(serial, Item::Plane(index));
-        self.put(k, made_of, row, last_row, Entry::Plane(plane));
+        let _ = self.place(k, made_of, row, last_row, Entry::Plane(plane));
     }
 }

@@ -229,8 +229,15 @@ impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
             Blend::Over => ComposeOp::Over(opacity),
             Blend::Add => ComposeOp::Add(opacity),
         };
-        self.fill_outline(serial, 0, outline, Coverage::Rule(rule), &Paint::Flat(color), op)
-            .inspect_err(|&e| self.skip(serial, e))
+        self.fill_outline(
+            serial,
+            0,
+            outline,
+            Coverage::Rule(rule),
+            &Paint::Flat(color),
+            op,
+        )
+        .inspect_err(|&e| self.skip(serial, e))
     }
 
     /// Fills a triangle with a linear colour per vertex (Gouraud), or one
@@ -299,14 +306,28 @@ impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
                 Blend::Over => ComposeOp::Over(opacity),
                 Blend::Add => ComposeOp::Add(opacity),
             };
-            return self.fill_outline(serial, 0, &mesh, Coverage::Signed(1), &Paint::Flat(color), op);
+            return self.fill_outline(
+                serial,
+                0,
+                &mesh,
+                Coverage::Signed(1),
+                &Paint::Flat(color),
+                op,
+            );
         };
         if let Some(color) = flat {
             let op = match blend {
                 Blend::Over => ComposeOp::Over(opacity),
                 Blend::Add => ComposeOp::Add(opacity),
             };
-            return self.fill_outline(serial, 0, &mesh, Coverage::Signed(1), &Paint::Flat(color), op);
+            return self.fill_outline(
+                serial,
+                0,
+                &mesh,
+                Coverage::Signed(1),
+                &Paint::Flat(color),
+                op,
+            );
         }
         // Gouraud: in painter's order, first take the mesh's coverage out
         // of what is under it, then add each triangle's colour; added,
@@ -364,13 +385,27 @@ impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
         let [c0, c1, c2] = colors;
         if c0 == c1 && c1 == c2 {
             let paint = Paint::Flat(c0.map(|x| x.min(crate::LIN_MAX)));
-            return self.fill_outline(serial, first, &v, Coverage::Rule(FillRule::NonZero), &paint, op);
+            return self.fill_outline(
+                serial,
+                first,
+                &v,
+                Coverage::Rule(FillRule::NonZero),
+                &paint,
+                op,
+            );
         }
         let Some(plane) = self.plane(serial, first, v, colors, b) else {
             return Ok(());
         };
         let oriented = orient(v);
-        self.fill_outline(serial, first, &oriented, Coverage::Signed(1), &Paint::Plane(&plane), op)
+        self.fill_outline(
+            serial,
+            first,
+            &oriented,
+            Coverage::Signed(1),
+            &Paint::Plane(&plane),
+            op,
+        )
     }
 
     /// The Gouraud plane of a triangle: fitted once per frame when cached.
@@ -470,25 +505,39 @@ impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
             match kind {
                 WalkKind::Box(mode) => {
                     let tag = mode as i32;
-                    let stored = cache.as_deref_mut().and_then(|c| c.take_walk(serial, k, p0, p1, tag));
-                    let walk = stored.or_else(|| EdgeWalk::new(p0, p1, mode, cols.clone()));
-                    if let Some(mut w) = walk {
+                    if let Some(w) = cache
+                        .as_deref_mut()
+                        .and_then(|c| c.walk(serial, k, p0, p1, tag))
+                    {
                         w.walk(rows.clone(), buf);
-                        if w.rows().end > rows.end {
-                            if let Some(c) = cache.as_deref_mut() {
-                                c.put_walk(serial, k, p0, p1, tag, rows.start, w);
+                    } else if let Some(mut w) = EdgeWalk::new(p0, p1, mode, cols.clone()) {
+                        // Kept only if it goes on below this band.
+                        match cache.as_deref_mut() {
+                            Some(c) if w.rows().end > rows.end => {
+                                match c.place_walk(serial, k, p0, p1, tag, rows.start, w) {
+                                    Ok(s) => s.walk(rows.clone(), buf),
+                                    Err(mut w) => w.walk(rows.clone(), buf),
+                                }
                             }
+                            _ => w.walk(rows.clone(), buf),
                         }
                     }
                 }
                 WalkKind::Aliased => {
-                    let stored = cache.as_deref_mut().and_then(|c| c.take_aliased(serial, k, p0, p1));
-                    if let Some(mut w) = stored.or_else(|| AliasedWalk::new(p0, p1)) {
+                    if let Some(w) = cache
+                        .as_deref_mut()
+                        .and_then(|c| c.aliased(serial, k, p0, p1))
+                    {
                         w.walk(rows.clone(), buf);
-                        if w.rows().end > rows.end {
-                            if let Some(c) = cache.as_deref_mut() {
-                                c.put_aliased(serial, k, p0, p1, rows.start, w);
+                    } else if let Some(mut w) = AliasedWalk::new(p0, p1) {
+                        match cache.as_deref_mut() {
+                            Some(c) if w.rows().end > rows.end => {
+                                match c.place_aliased(serial, k, p0, p1, rows.start, w) {
+                                    Ok(s) => s.walk(rows.clone(), buf),
+                                    Err(mut w) => w.walk(rows.clone(), buf),
+                                }
                             }
+                            _ => w.walk(rows.clone(), buf),
                         }
                     }
                 }
@@ -583,7 +632,8 @@ fn plane_key<const C: usize>(v: [FinePoint; 3], colors: &[[u16; C]; 3]) -> [i32;
     for c in colors.iter().flatten() {
         h = (h ^ u64::from(*c)).wrapping_mul(0x100_0000_01b3);
     }
-    h = (h ^ (v[2].x as u32 as u64) ^ (u64::from(v[2].y as u32) << 32)).wrapping_mul(0x100_0000_01b3);
+    h = (h ^ (v[2].x as u32 as u64) ^ (u64::from(v[2].y as u32) << 32))
+        .wrapping_mul(0x100_0000_01b3);
     [v[0].x, v[0].y, v[1].x, v[1].y, h as i32, (h >> 32) as i32]
 }
 

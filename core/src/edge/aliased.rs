@@ -11,7 +11,7 @@
 use core::ops::Range;
 
 use super::CoverSink;
-use crate::arith::{div_floor, rem_floor};
+use crate::arith::{div_floor, divmod_floor};
 use crate::geom::{FinePoint, FINE_ONE};
 use crate::COVER_ONE;
 
@@ -62,6 +62,7 @@ impl AliasedWalk {
         }
         let d = n * dy;
         let step = -n * dx;
+        let (sq, sr) = divmod_floor(step, d);
         let mut walk = Self {
             w,
             first: first as i32,
@@ -70,8 +71,8 @@ impl AliasedWalk {
             y0,
             dx,
             d,
-            sq: div_floor(step, d),
-            sr: rem_floor(step, d),
+            sq,
+            sr,
             row: i32::MIN,
             fq: 0,
             fr: 0,
@@ -94,8 +95,7 @@ impl AliasedWalk {
         let dy = self.d / n;
         let m = -(self.x0 * dy + (yc - self.y0) * self.dx - n / 2 * dy);
         self.row = j;
-        self.fq = div_floor(m, self.d);
-        self.fr = rem_floor(m, self.d);
+        (self.fq, self.fr) = divmod_floor(m, self.d);
     }
 
     /// Reports the cover changes of the rows in `rows` to `sink`.

@@ -2,7 +2,7 @@
 //! columns of an edge. A few times per edge; divides in `u64`/`i64`.
 
 use super::canon::Canon;
-use crate::arith::{div_floor, limit, rem_floor};
+use crate::arith::{div_floor, divmod_floor, limit, udivmod};
 use crate::geom::FINE_BITS;
 use crate::COVER_BITS;
 
@@ -44,12 +44,14 @@ pub(crate) fn clamped_area(e: &Canon, ulo: i64, uhi: i64, vlo: i64, vhi: i64) ->
         } else {
             // Trapezoid (q - p)(gp + gq) / (2 du): whole part and remainder.
             let n = (q - p) * (gp + gq);
-            whole += div_floor(n, 2 * du);
-            frac += rem_floor(n, 2 * du) * dv;
+            let (nq, nr) = divmod_floor(n, 2 * du);
+            whole += nq;
+            frac += nr * dv;
             let den = (2 * du * dv) as u64;
             let tri = |g: i64| {
                 let g2 = (g.unsigned_abs()) * (g.unsigned_abs());
-                ((g2 / den) as i64, (g2 % den) as i64)
+                let (q, r) = udivmod(g2, den);
+                (q as i64, r as i64)
             };
             if gp < 0 {
                 let (tq, tr) = tri(gp);

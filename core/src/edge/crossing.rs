@@ -68,10 +68,7 @@ impl Qr {
     /// `num / den` for `num >= 0`, `den > 0`, the remainder scaled by
     /// `scale` so that it counts `1 / (den * scale)` (set-up only).
     fn of(num: u64, den: u64, scale: u64) -> Self {
-        let (q, r) = match (num.checked_div(den), num.checked_rem(den)) {
-            (Some(q), Some(r)) => (q, r),
-            _ => (0, 0),
-        };
+        let (q, r) = crate::arith::udivmod(num, den);
         Self {
             q: q as i64,
             r: r.saturating_mul(scale) as i64,
@@ -154,7 +151,7 @@ impl Crossings {
         }
         let n = 1i64 << FINE_BITS;
         let (udu, udv) = (du as u64, dv as u64);
-        let rho = du % dv;
+        let (cols, rho) = crate::arith::divmod_floor(du, dv);
         let d = (du * dv) << Z_BITS;
         // c1 = d1² / D = N² rho² / (Z du dv): numerator < 2^(20 + 44 - 5).
         let n2_over_z = 1u64 << (2 * FINE_BITS - Z_BITS);
@@ -169,7 +166,7 @@ impl Crossings {
             d,
             ndv: n * dv,
             delta: n * rho,
-            cols: (du / dv) as i32,
+            cols: cols as i32,
             c1,
             c2: c1.sub(m1, d).add(cr, d),
             j1,
@@ -190,11 +187,10 @@ impl Crossings {
         let n = 1i64 << FINE_BITS;
         // u* dv = u0 dv + (m N - v0) du: below 2^45 in magnitude.
         let t = self.u0 * self.dv + (i64::from(m) * n - self.v0) * self.du;
-        let col = crate::arith::div_floor(t, self.ndv);
-        let xi = t - col * self.ndv;
+        let (col, xi) = crate::arith::divmod_floor(t, self.ndv);
         let (uxi, udu, udv) = (xi as u64, self.du as u64, self.dv as u64);
         let z = 1u64 << Z_BITS;
-        let rho = (self.du % self.dv) as u64;
+        let rho = (self.delta >> FINE_BITS) as u64;
         // L = xi² / D: xi < 2^32, so xi² < 2^64 (u64).
         let l = Qr::of(uxi * uxi, self.d as u64, 1);
         // J = 2 xi d1 / D = 2 N xi rho / (Z du dv): numerator < 2^(11 + 32 + 22 - 5).

@@ -8,7 +8,7 @@ use super::area::clamped_area;
 use super::canon::{Canon, N};
 use super::crossing::{Crossing, Crossings};
 use super::{AreaMode, CoverSink};
-use crate::arith::{div_floor, limit, rem_floor};
+use crate::arith::{div_floor, divmod_floor, limit};
 use crate::geom::FinePoint;
 use crate::COVER_ONE;
 
@@ -65,7 +65,7 @@ struct Resume {
 /// The signs: an edge that runs down the screen reports `+` the area right
 /// of it, one that runs up `-`; so the sum over the edges of closed
 /// contours is, in every pixel, the integral of the winding number.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Copy)]
 pub struct EdgeWalk {
     e: Canon,
     /// Sign of the cell areas: the winding times the side of the canonical
@@ -107,6 +107,7 @@ impl EdgeWalk {
         let (b0, b1) = e.rows();
         let one = i64::from(ONE);
         let exact = mode == AreaMode::Exact;
+        let (q, rr) = divmod_floor(one * e.dv, e.du);
         let mut walk = Self {
             e,
             sw: e.sign() * e.dir,
@@ -116,8 +117,8 @@ impl EdgeWalk {
             b0: b0 as i32,
             b1: b1 as i32,
             du: e.du as i32,
-            q: div_floor(one * e.dv, e.du) as i32,
-            rr: rem_floor(one * e.dv, e.du) as i32,
+            q: q as i32,
+            rr: rr as i32,
             cross: if exact {
                 Crossings::new(e.u0, e.v0, e.du, e.dv)
             } else {
@@ -231,11 +232,12 @@ impl EdgeWalk {
             (b * N, i64::from(ONE))
         };
         let n = H * (vn - v_ref * e.du);
+        let (s, r) = divmod_floor(n, e.du);
         Step {
             a,
             b: b as i32,
-            s: div_floor(n, e.du) as i32,
-            r: rem_floor(n, e.du) as i32,
+            s: s as i32,
+            r: r as i32,
             h: h as i32,
         }
     }
@@ -564,4 +566,3 @@ impl EdgeWalk {
         });
     }
 }
-

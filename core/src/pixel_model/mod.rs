@@ -123,6 +123,41 @@ pub const fn sample_weight(n: usize, kx: usize, ky: usize) -> u32 {
     tent_weight(n, kx) * tent_weight(n, ky)
 }
 
+/// The unit of the models' weights: 4096 per pixel. Their tables
+/// ([`HEX19_POINTS`], the circular filters') are published in it; the
+/// band's scratch counts 16 times finer ([`COVER_ONE`](crate::COVER_ONE)),
+/// so a weight is scaled by a shift when it is recorded.
+pub const MODEL_ONE: i32 = 1 << 12;
+
+/// Records a model's cover change (in [`MODEL_ONE`] units) in the band.
+trait ModelCover {
+    fn add_model_cover(&mut self, x: i32, y: i32, delta: i32);
+}
+
+impl<const C: usize> ModelCover for crate::band::BandBuffer<'_, C> {
+    #[inline]
+    fn add_model_cover(&mut self, x: i32, y: i32, delta: i32) {
+        const SHIFT: u32 = crate::COVER_BITS - 12;
+        self.add_cover(x, y, delta << SHIFT);
+    }
+}
+
+/// The aliased walk of an edge given on a sample grid: `p0`, `p1` in 1/16
+/// of a sample (a [`SubPoint`](crate::SubPoint) scaled by the samples per
+/// pixel), rows in samples. Sample centres on a shared edge go to exactly
+/// one shape (the top-left rule), so sampled meshes stay seamless.
+pub(super) fn walk_samples<K: crate::edge::CoverSink>(
+    p0: crate::SubPoint,
+    p1: crate::SubPoint,
+    rows: core::ops::Range<i32>,
+    sink: &mut K,
+) {
+    let fine = |p: crate::SubPoint| crate::geom::FinePoint::from(p);
+    if let Some(mut w) = crate::edge::AliasedWalk::new(fine(p0), fine(p1)) {
+        w.walk(rows, sink);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -159,40 +194,5 @@ mod tests {
         assert_eq!(a + 2 * b + c, 16);
         assert_eq!(tent_sum(2) * tent_sum(2), 64);
         assert_eq!(tent_sum(4) * tent_sum(4), 1024);
-    }
-}
-
-/// The unit of the models' weights: 4096 per pixel. Their tables
-/// ([`HEX19_POINTS`], the circular filters') are published in it; the
-/// band's scratch counts 16 times finer ([`COVER_ONE`](crate::COVER_ONE)),
-/// so a weight is scaled by a shift when it is recorded.
-pub const MODEL_ONE: i32 = 1 << 12;
-
-/// Records a model's cover change (in [`MODEL_ONE`] units) in the band.
-trait ModelCover {
-    fn add_model_cover(&mut self, x: i32, y: i32, delta: i32);
-}
-
-impl<const C: usize> ModelCover for crate::band::BandBuffer<'_, C> {
-    #[inline]
-    fn add_model_cover(&mut self, x: i32, y: i32, delta: i32) {
-        const SHIFT: u32 = crate::COVER_BITS - 12;
-        self.add_cover(x, y, delta << SHIFT);
-    }
-}
-
-/// The aliased walk of an edge given on a sample grid: `p0`, `p1` in 1/16
-/// of a sample (a [`SubPoint`](crate::SubPoint) scaled by the samples per
-/// pixel), rows in samples. Sample centres on a shared edge go to exactly
-/// one shape (the top-left rule), so sampled meshes stay seamless.
-pub(super) fn walk_samples<K: crate::edge::CoverSink>(
-    p0: crate::SubPoint,
-    p1: crate::SubPoint,
-    rows: core::ops::Range<i32>,
-    sink: &mut K,
-) {
-    let fine = |p: crate::SubPoint| crate::geom::FinePoint::from(p);
-    if let Some(mut w) = crate::edge::AliasedWalk::new(fine(p0), fine(p1)) {
-        w.walk(rows, sink);
     }
 }

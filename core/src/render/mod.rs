@@ -23,7 +23,7 @@ use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::geometry::{OriginDimensions, Point, Size};
 use embedded_graphics_core::primitives::Rectangle;
 
-use crate::band::{Band, BandBuffer, BandError, Bands};
+use crate::band::{BandBuffer, BandError, Bands};
 use crate::canvas::{Canvas, Skipped, WalkCache, WalkSlot};
 use crate::tone::profile::{Profile, ToneRow};
 
@@ -94,9 +94,9 @@ pub struct FrameReport {
 /// let p = |x, y| FinePoint::from_px(x, y);
 /// let tri = [p(0, 0), p(16, 0), p(0, 12)];
 /// let mut renderer = Renderer::new(&mut acc, &mut cover, &mut slots, W, 12, ROWS).unwrap();
-/// let mut gray = Gray8Format::new(Curve::Srgb);
+/// static GRAY: Gray8Format = Gray8Format::new(Curve::Srgb);
 /// renderer
-///     .render(&mut screen, &mut gray, [0], |c| {
+///     .render(&mut screen, &GRAY, [0], |c| {
 ///         c.fill(&Contour(&tri), [4095], FillRule::NonZero, Blend::Over, Opacity::OPAQUE)
 ///     })
 ///     .unwrap();
@@ -133,7 +133,11 @@ impl<'a, const C: usize> Renderer<'a, C> {
         band_rows: u16,
     ) -> Result<Self, BandError> {
         let rows = band_rows.max(1);
-        if width == 0 || height == 0 || width > crate::band::MAX_WIDTH || height > crate::band::MAX_WIDTH {
+        if width == 0
+            || height == 0
+            || width > crate::band::MAX_WIDTH
+            || height > crate::band::MAX_WIDTH
+        {
             return Err(BandError::BadBand);
         }
         if acc.len() < BandBuffer::<C>::acc_len(width, rows) {
@@ -169,7 +173,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
     pub fn render<D, P, E, F>(
         &mut self,
         target: &mut D,
-        profile: &mut P,
+        mut profile: P,
         background: [u16; C],
         draw: F,
     ) -> Result<FrameReport, RenderError<D::Error, E>>
@@ -186,7 +190,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
             });
         }
         let bands = Bands::new(self.width, self.height, self.band_rows);
-        self.frame(target, profile, background, bands, draw)
+        self.frame(target, &mut profile, background, bands, draw)
     }
 
     /// Renders only the window `area` of the frame (clipped to it): what a
@@ -197,7 +201,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
     pub fn render_window<D, P, E, F>(
         &mut self,
         target: &mut D,
-        profile: &mut P,
+        mut profile: P,
         background: [u16; C],
         area: Rectangle,
         draw: F,
@@ -207,14 +211,17 @@ impl<'a, const C: usize> Renderer<'a, C> {
         P: Profile<C, Color = D::Color>,
         F: FnMut(&mut Canvas<'_, '_, C>) -> Result<(), E>,
     {
-        let frame = Rectangle::new(Point::zero(), Size::new(u32::from(self.width), u32::from(self.height)));
+        let frame = Rectangle::new(
+            Point::zero(),
+            Size::new(u32::from(self.width), u32::from(self.height)),
+        );
         let area = area.intersection(&frame);
         let (w, h) = (area.size.width as u16, area.size.height as u16);
         if w == 0 || h == 0 {
             return Ok(FrameReport::default());
         }
         let bands = Bands::window(area.top_left.x, area.top_left.y, w, h, self.band_rows);
-        self.frame(target, profile, background, bands, draw)
+        self.frame(target, &mut profile, background, bands, draw)
     }
 
     fn frame<D, P, E, F>(
@@ -263,7 +270,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
             if let (Err(e), None) = (r, &failed) {
                 failed = Some((band.y0, e));
             }
-            send(&mut buf, target, profile).map_err(RenderError::Target)?;
+            send(&mut buf, target, &mut *profile).map_err(RenderError::Target)?;
             self.holds = (band.width == self.width).then_some(bg);
             report.bands += 1;
         }
@@ -290,64 +297,127 @@ where
         Point::new(band.x0, band.y0),
         Size::new(u32::from(band.width), u32::from(band.rows)),
     );
-    let bg = buf.background();
-    let uniform = profile.uniform(bg);
+    let uniform = profile.uniform(buf.background());
+    let parts = buf.flush_parts();
     let pixels = BandPixels {
-        buf,
+        acc: parts.acc,
+        extents: parts.extents,
+        bg: parts.background,
         profile,
         uniform,
-        band,
-        r: 0,
-        k: 0,
+        x0: band.x0,
+        y: band.y0 - 1,
+        width: band.width,
+        rows_left: band.rows,
+        // A row is to start.
+        col: band.width,
+        seg_end: 0,
+        seg: Segment::Uniform,
         dirty: 0..0,
     };
     target.fill_contiguous(&area, pixels)
 }
 
-/// A band's pixels in row order, through the profile.
-struct BandPixels<'x, 'b, P: Profile<C>, const C: usize> {
-    buf: &'x mut BandBuffer<'b, C>,
+/// A band's pixels in row order, through the profile; each pixel's
+/// accumulator reset to the background as it is read.
+///
+/// A row is up to three segments: columns nothing was drawn on left and
+/// right of its drawn extent, sent as the background's colour when the
+/// profile has one for every position (their accumulator already holds the
+/// background), and the drawn extent, resolved pixel by pixel. Per pixel a
+/// compare; segment changes are the slow path.
+struct BandPixels<'x, P: Profile<C>, const C: usize> {
+    /// The pixels not passed yet (rows are contiguous).
+    acc: &'x mut [i32],
+    /// Per row, the drawn extent (see [`BandBuffer::flush_parts`]).
+    extents: crate::band::DrawnExtents<'x>,
+    bg: [i32; C],
     profile: &'x mut P,
     uniform: Option<P::Color>,
-    band: Band,
-    /// Current row (band-relative) and column.
-    r: u16,
-    k: u16,
-    /// Columns of the current row that hold something besides the
-    /// background.
+    x0: i32,
+    /// Current frame row, and rows still to start.
+    y: i32,
+    width: u16,
+    rows_left: u16,
+    /// Column of the next pixel, and where its segment ends.
+    col: u16,
+    seg_end: u16,
+    seg: Segment,
+    /// Drawn columns of the current row.
     dirty: core::ops::Range<u16>,
 }
 
-impl<P: Profile<C>, const C: usize> Iterator for BandPixels<'_, '_, P, C> {
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Segment {
+    Uniform,
+    Pixels,
+}
+
+impl<P: Profile<C>, const C: usize> BandPixels<'_, P, C> {
+    /// Moves to the next segment (and row); `false` at the band's end.
+    #[cold]
+    fn next_segment(&mut self) -> bool {
+        loop {
+            if self.col >= self.width {
+                if self.rows_left == 0 {
+                    return false;
+                }
+                self.rows_left -= 1;
+                self.y += 1;
+                self.col = 0;
+                self.dirty = self.extents.take(self.y);
+                if self.uniform.is_none() {
+                    self.dirty = 0..self.width;
+                }
+                if !self.dirty.is_empty() {
+                    let n = usize::from(self.width) * C;
+                    if let Some(row) = self.acc.get(..n) {
+                        self.profile.start_row(&ToneRow::new(self.y, self.x0, row));
+                    }
+                }
+            }
+            let (seg, end) = if self.col < self.dirty.start {
+                (Segment::Uniform, self.dirty.start)
+            } else if self.col < self.dirty.end {
+                (Segment::Pixels, self.dirty.end)
+            } else {
+                (Segment::Uniform, self.width)
+            };
+            if seg == Segment::Uniform {
+                // Skip those pixels' accumulator: it holds the background.
+                let skip = usize::from(end - self.col) * C;
+                let acc = core::mem::take(&mut self.acc);
+                self.acc = acc.get_mut(skip..).unwrap_or_default();
+            }
+            self.seg = seg;
+            self.seg_end = end;
+            if end > self.col {
+                return true;
+            }
+        }
+    }
+}
+
+impl<P: Profile<C>, const C: usize> Iterator for BandPixels<'_, P, C> {
     type Item = P::Color;
 
     #[inline]
     fn next(&mut self) -> Option<P::Color> {
-        if self.k == self.band.width {
-            self.k = 0;
-            self.r += 1;
-        }
-        if self.r >= self.band.rows {
+        if self.col >= self.seg_end && !self.next_segment() {
             return None;
         }
-        let y = self.band.y0 + i32::from(self.r);
-        if self.k == 0 {
-            self.dirty = self.buf.take_dirty(self.r);
-            if self.uniform.is_none() || !self.dirty.is_empty() {
-                if let Some(acc) = self.buf.acc_row(y) {
-                    self.profile.start_row(&ToneRow::new(y, self.band.x0, acc));
-                }
-            }
+        let k = self.col;
+        self.col += 1;
+        if self.seg == Segment::Uniform {
+            return self.uniform;
         }
-        let k = self.k;
-        self.k += 1;
-        let x = self.band.x0 + i32::from(k);
-        match self.uniform {
-            Some(c) if !self.dirty.contains(&k) => Some(c),
-            _ => {
-                let lin = self.buf.take_pixel(self.r, k);
-                Some(self.profile.color(x, y, lin))
-            }
+        let (px, rest) = core::mem::take(&mut self.acc).split_first_chunk_mut::<C>()?;
+        self.acc = rest;
+        let mut lin = [0u16; C];
+        for ch in 0..C {
+            lin[ch] = crate::band::resolve(px[ch]);
+            px[ch] = self.bg[ch];
         }
+        Some(self.profile.color(self.x0 + i32::from(k), self.y, lin))
     }
 }

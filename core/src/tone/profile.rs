@@ -64,7 +64,7 @@ pub trait Profile<const C: usize> {
 
     /// The colour of frame pixel `(x, y)` of value `lin` (asked in order
     /// within the row last started).
-    fn color(&mut self, x: i32, y: i32, lin: [u16; C]) -> Self::Color;
+    fn color(&self, x: i32, y: i32, lin: [u16; C]) -> Self::Color;
 
     /// The colour every pixel of value `lin` gets wherever it is, if the
     /// profile does not depend on position (no dithering): the renderer
@@ -72,17 +72,48 @@ pub trait Profile<const C: usize> {
     fn uniform(&self, lin: [u16; C]) -> Option<Self::Color>;
 }
 
+/// A γ format is a profile by reference: its tables are usually a
+/// `static` in flash.
+///
+/// ```
+/// use softedge::tone::{format::Rgb565Format, Curve, Profile};
+/// static RGB565: Rgb565Format = Rgb565Format::new(Curve::Srgb);
+/// let profile = &RGB565;
+/// assert_eq!(profile.uniform([4095; 3]), Some(embedded_graphics_core::pixelcolor::Rgb565::new(31, 63, 31)));
+/// ```
 #[cfg(feature = "embedded-graphics")]
-impl<F: ToneFormat<C>, const C: usize> Profile<C> for F {
+impl<F: ToneFormat<C>, const C: usize> Profile<C> for &F {
     type Color = F::Color;
 
     #[inline]
-    fn color(&mut self, _x: i32, _y: i32, lin: [u16; C]) -> Self::Color {
-        ToneFormat::color(self, lin)
+    fn color(&self, _x: i32, _y: i32, lin: [u16; C]) -> Self::Color {
+        ToneFormat::color(*self, lin)
     }
 
     fn uniform(&self, lin: [u16; C]) -> Option<Self::Color> {
-        Some(ToneFormat::color(self, lin))
+        Some(ToneFormat::color(*self, lin))
+    }
+}
+
+/// A profile with state (error diffusion) is lent to the renderer.
+impl<P: Profile<C> + ?Sized, const C: usize> Profile<C> for &mut P {
+    type Color = P::Color;
+
+    fn start_frame(&mut self) {
+        (**self).start_frame();
+    }
+
+    fn start_row(&mut self, row: &ToneRow<'_, C>) {
+        (**self).start_row(row);
+    }
+
+    #[inline]
+    fn color(&self, x: i32, y: i32, lin: [u16; C]) -> Self::Color {
+        (**self).color(x, y, lin)
+    }
+
+    fn uniform(&self, lin: [u16; C]) -> Option<Self::Color> {
+        (**self).uniform(lin)
     }
 }
 
@@ -91,7 +122,7 @@ impl Profile<1> for Bayer8 {
     type Color = embedded_graphics_core::pixelcolor::BinaryColor;
 
     #[inline]
-    fn color(&mut self, x: i32, y: i32, [lin]: [u16; 1]) -> Self::Color {
+    fn color(&self, x: i32, y: i32, [lin]: [u16; 1]) -> Self::Color {
         self.is_on(lin, x, y).into()
     }
 
@@ -142,9 +173,12 @@ impl Profile<1> for DiffusionProfile<'_> {
     }
 
     #[inline]
-    fn color(&mut self, x: i32, _y: i32, _lin: [u16; 1]) -> Self::Color {
+    fn color(&self, x: i32, _y: i32, _lin: [u16; 1]) -> Self::Color {
         let k = x.wrapping_sub(self.x0);
-        let on = usize::try_from(k).ok().and_then(|k| self.bits.get(k)).copied();
+        let on = usize::try_from(k)
+            .ok()
+            .and_then(|k| self.bits.get(k))
+            .copied();
         on.unwrap_or(false).into()
     }
 

@@ -19,16 +19,18 @@ mod tests {
     use std::vec;
 
     use super::eg_side::{self, StockFramebuffer, Targets};
-    use super::softedge_side::{self, Buffers, Renderer, ACC_LEN, COVER_LEN, OUT_LEN, ROW_LEN};
+    use super::softedge_side::{self, Buffers, Renderer, ACC_LEN, COVER_LEN, OUT_LEN, SLOTS};
     use super::targets::{Framebuffer, FB_LEN};
     use crate::{Tri, CLASSES, SCREEN};
+    use softedge::canvas::WalkSlot;
 
     struct Storage {
         acc: vec::Vec<i32>,
         cover: vec::Vec<i32>,
         out16: vec::Vec<u16>,
         out8: vec::Vec<u8>,
-        row: Box<[[u16; 3]; ROW_LEN]>,
+        slots3: vec::Vec<WalkSlot<3>>,
+        slots1: vec::Vec<WalkSlot<1>>,
     }
 
     impl Storage {
@@ -38,7 +40,8 @@ mod tests {
                 cover: vec![0; COVER_LEN],
                 out16: vec![0; OUT_LEN],
                 out8: vec![0; OUT_LEN],
-                row: Box::new([[0; 3]; ROW_LEN]),
+                slots3: vec![WalkSlot::EMPTY; SLOTS],
+                slots1: vec![WalkSlot::EMPTY; SLOTS],
             }
         }
 
@@ -48,7 +51,8 @@ mod tests {
                 cover: &mut self.cover,
                 out16: &mut self.out16,
                 out8: &mut self.out8,
-                row: &mut self.row,
+                slots3: &mut self.slots3,
+                slots1: &mut self.slots1,
             };
             softedge_side::frame(r, tris, rows, &mut bufs).is_ok()
         }
@@ -72,12 +76,12 @@ mod tests {
     }
 
     #[test]
-    fn flush_and_resolve_row_send_the_same_band() {
+    fn the_walk_cache_changes_no_pixel() {
         // The last band of the frame stays in the output buffer.
         let (mut a, mut b) = (Storage::new(), Storage::new());
-        for rows in [16, 3] {
+        for rows in [16, 3, 1] {
             assert!(a.frame(Renderer::AaFlatRgb, SCREEN.tris, rows));
-            assert!(b.frame(Renderer::AaFlatRgbRows, SCREEN.tris, rows));
+            assert!(b.frame(Renderer::AaFlatRgbNoCache, SCREEN.tris, rows));
             let last_rows = match 240 % rows {
                 0 => rows,
                 r => r,

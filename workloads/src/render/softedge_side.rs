@@ -1,26 +1,30 @@
 //! Every softedge call of the benchmark, in one place (porting the
 //! benchmark to another engine API means rewriting this file only).
 //!
-//! A frame is 240x240, rendered band by band as a firmware with a DMA
-//! display does: per band, a [`BandBuffer`] over the static buffers is
-//! cleared to black, every triangle of the workload is drawn into it
-//! (`Triangle::draw`, which clips it to the band), then the band goes
-//! through the tone stage (sRGB γ tables of [`Rgb565Format`] /
-//! [`Gray8Format`], pack) into the one-band output buffer with
-//! [`BandBuffer::flush`] (one `fill_contiguous` into a [`BandSink`]), or, for
-//! [`Renderer::AaFlatRgbRows`], with `resolve_row` + `code_row` row by row.
-//! The workload's whole-pixel vertices become `SubPoint::from_px` and its
-//! colours linear 12-bit inside the measured frame (a few instructions per
-//! triangle and band).
+//! A frame is 240x240, rendered as a firmware with a DMA display does,
+//! through softedge's frame loop ([`softedge::render::Renderer`]): per
+//! band the band buffer (reset to black as the previous band was sent),
+//! every triangle of the workload drawn into the band's canvas in painter's
+//! order (the canvas rejects those that miss the band by their bounds; the
+//! rest resume their edges' walks from the walk cache), then one
+//! `fill_contiguous` through the tone stage (sRGB γ tables of
+//! [`Rgb565Format`] / [`Gray8Format`], pack) into the one-band output
+//! buffer ([`BandStream`]). The workload's whole-pixel vertices are pixel
+//! centres (embedded-graphics' convention for the same points) and its
+//! colours linear 12-bit.
 
 use core::hint::black_box;
 
 use crate::{Tri, FRAME};
-use softedge::tone::format::{code_row, Gray8Format, Rgb565Format, ToneFormat};
+use softedge::canvas::WalkSlot;
+use softedge::geom::FinePoint;
+use softedge::render::Renderer as FrameRenderer;
+use softedge::style::{Blend, Opacity};
+use softedge::tone::format::{Gray8Format, Rgb565Format};
 use softedge::tone::Curve;
-use softedge::{BandBuffer, Bands, RenderStyle, SubPoint, Triangle};
+use softedge::{BandBuffer, RenderStyle};
 
-use super::targets::BandSink;
+use super::targets::BandStream;
 
 /// The tallest band measured (the buffers are sized for it).
 pub const MAX_BAND_ROWS: u16 = 16;
@@ -30,8 +34,9 @@ pub const ACC_LEN: usize = BandBuffer::<3>::acc_len(FRAME, MAX_BAND_ROWS);
 pub const COVER_LEN: usize = BandBuffer::<3>::cover_len(FRAME, MAX_BAND_ROWS);
 /// Pixels of the one-band output buffer.
 pub const OUT_LEN: usize = FRAME as usize * MAX_BAND_ROWS as usize;
-/// Pixels of one frame row.
-pub const ROW_LEN: usize = FRAME as usize;
+/// Slots of the walk cache: the edges alive across a band boundary, and
+/// the planes of the Gouraud triangles alive there, with room to spare.
+pub const SLOTS: usize = 256;
 
 /// The display's tone stage: sRGB γ, Rgb565 (tables in flash).
 static RGB565: Rgb565Format = Rgb565Format::new(Curve::Srgb);
@@ -41,7 +46,7 @@ static GRAY8: Gray8Format = Gray8Format::new(Curve::Srgb);
 /// The softedge renderers measured.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Renderer {
-    /// Anti-aliased (exact box coverage), flat RGB, Rgb565 through `flush`.
+    /// Anti-aliased (exact box coverage), flat RGB, Rgb565.
     AaFlatRgb,
     /// Anti-aliased, Gouraud RGB (a colour per vertex), Rgb565.
     AaGouraudRgb,
@@ -49,9 +54,9 @@ pub enum Renderer {
     AaGray,
     /// `RenderStyle::ALIASED` (pixel centres, top-left rule), flat RGB, Rgb565.
     AliasedRgb,
-    /// As [`AaFlatRgb`](Self::AaFlatRgb), flushed by `resolve_row` +
-    /// `code_row` into the output buffer instead of `flush`.
-    AaFlatRgbRows,
+    /// As [`AaFlatRgb`](Self::AaFlatRgb) without the walk cache: every
+    /// band sets its shapes up again.
+    AaFlatRgbNoCache,
 }
 
 impl Renderer {
@@ -61,7 +66,7 @@ impl Renderer {
         Renderer::AaGouraudRgb,
         Renderer::AaGray,
         Renderer::AliasedRgb,
-        Renderer::AaFlatRgbRows,
+        Renderer::AaFlatRgbNoCache,
     ];
 
     /// The name printed in the output.
@@ -71,7 +76,7 @@ impl Renderer {
             Renderer::AaGouraudRgb => "aa_gouraud",
             Renderer::AaGray => "aa_gray",
             Renderer::AliasedRgb => "aliased_rgb",
-            Renderer::AaFlatRgbRows => "aa_rgb_rows",
+            Renderer::AaFlatRgbNoCache => "aa_rgb_nocache",
         }
     }
 }
@@ -86,8 +91,10 @@ pub struct Buffers<'a> {
     pub out16: &'a mut [u16],
     /// The Gray8 output band, at least [`OUT_LEN`].
     pub out8: &'a mut [u8],
-    /// One resolved row (`resolve_row` + `code_row` only).
-    pub row: &'a mut [[u16; 3]; ROW_LEN],
+    /// The walk cache of the RGB renderers.
+    pub slots3: &'a mut [WalkSlot<3>],
+    /// The walk cache of the gray renderer.
+    pub slots1: &'a mut [WalkSlot<1>],
 }
 
 /// A frame stopped: a buffer did not fit its band or a triangle was
@@ -106,26 +113,23 @@ pub fn frame(
     if band_rows > MAX_BAND_ROWS {
         return Err(FrameError);
     }
-    let aa = RenderStyle::default();
     match renderer {
-        Renderer::AaFlatRgb => frame_rgb(tris, band_rows, bufs, &aa, false),
-        Renderer::AaGouraudRgb => frame_rgb(tris, band_rows, bufs, &aa, true),
-        Renderer::AliasedRgb => frame_rgb(tris, band_rows, bufs, &RenderStyle::ALIASED, false),
+        Renderer::AaFlatRgb => {
+            frame_rgb(tris, band_rows, bufs, RenderStyle::default(), false, true)
+        }
+        Renderer::AaGouraudRgb => {
+            frame_rgb(tris, band_rows, bufs, RenderStyle::default(), true, true)
+        }
+        Renderer::AliasedRgb => frame_rgb(tris, band_rows, bufs, RenderStyle::ALIASED, false, true),
         Renderer::AaGray => frame_gray(tris, band_rows, bufs),
-        Renderer::AaFlatRgbRows => frame_rgb_rows(tris, band_rows, bufs),
+        Renderer::AaFlatRgbNoCache => {
+            frame_rgb(tris, band_rows, bufs, RenderStyle::default(), false, false)
+        }
     }
 }
 
-fn vertices(t: &Tri) -> [SubPoint; 3] {
-    t.v.map(|[x, y]| SubPoint::from_px(i32::from(x), i32::from(y)))
-}
-
-fn triangle_rgb(t: &Tri, gouraud: bool) -> Triangle<3> {
-    if gouraud {
-        Triangle::new(vertices(t), t.rgb)
-    } else {
-        Triangle::flat(vertices(t), t.flat_rgb())
-    }
+fn vertices(t: &Tri) -> [FinePoint; 3] {
+    t.v.map(|[x, y]| FinePoint::centre_of(i32::from(x), i32::from(y)))
 }
 
 #[inline(never)]
@@ -133,71 +137,57 @@ fn frame_rgb(
     tris: &[Tri],
     band_rows: u16,
     bufs: &mut Buffers<'_>,
-    style: &RenderStyle,
+    style: RenderStyle,
     gouraud: bool,
+    cached: bool,
 ) -> Result<(), FrameError> {
-    for band in Bands::new(FRAME, FRAME, band_rows) {
-        let mut buf = BandBuffer::<3>::new(bufs.acc, bufs.cover, band).map_err(|_| FrameError)?;
-        buf.clear([0; 3]);
-        for t in tris {
-            triangle_rgb(t, gouraud)
-                .draw(&mut buf, style)
-                .map_err(|_| FrameError)?;
-        }
-        let mut sink = BandSink::new(
-            &mut *bufs.out16,
-            u32::from(FRAME),
-            u32::from(FRAME),
-            band.y0,
-            u32::from(band.rows),
-        );
-        let Ok(()) = buf.flush(&mut sink, |px| RGB565.color(px));
-        black_box(sink.pixels());
-    }
+    let slots: &mut [WalkSlot<3>] = if cached { &mut *bufs.slots3 } else { &mut [] };
+    let mut r = FrameRenderer::<3>::new(
+        &mut *bufs.acc,
+        &mut *bufs.cover,
+        slots,
+        FRAME,
+        FRAME,
+        band_rows,
+    )
+    .map_err(|_| FrameError)?;
+    let mut sink = BandStream::new(&mut *bufs.out16, u32::from(FRAME), u32::from(FRAME));
+    let report = r
+        .render(&mut sink, &RGB565, [0; 3], |c| {
+            c.set_style(style);
+            for t in tris {
+                let colors = if gouraud { t.rgb } else { [t.flat_rgb(); 3] };
+                c.fill_triangle(vertices(t), colors, Blend::Over, Opacity::OPAQUE)?;
+            }
+            Ok::<(), softedge::DrawError>(())
+        })
+        .map_err(|_| FrameError)?;
+    black_box(report);
+    black_box(sink.pixels());
     Ok(())
 }
 
 #[inline(never)]
 fn frame_gray(tris: &[Tri], band_rows: u16, bufs: &mut Buffers<'_>) -> Result<(), FrameError> {
-    let aa = RenderStyle::default();
-    for band in Bands::new(FRAME, FRAME, band_rows) {
-        let mut buf = BandBuffer::<1>::new(bufs.acc, bufs.cover, band).map_err(|_| FrameError)?;
-        buf.clear([0]);
-        for t in tris {
-            Triangle::flat(vertices(t), [t.gray()])
-                .draw(&mut buf, &aa)
-                .map_err(|_| FrameError)?;
-        }
-        let mut sink = BandSink::new(
-            &mut *bufs.out8,
-            u32::from(FRAME),
-            u32::from(FRAME),
-            band.y0,
-            u32::from(band.rows),
-        );
-        let Ok(()) = buf.flush(&mut sink, |px| GRAY8.color(px));
-        black_box(sink.pixels());
-    }
-    Ok(())
-}
-
-#[inline(never)]
-fn frame_rgb_rows(tris: &[Tri], band_rows: u16, bufs: &mut Buffers<'_>) -> Result<(), FrameError> {
-    let aa = RenderStyle::default();
-    for band in Bands::new(FRAME, FRAME, band_rows) {
-        let mut buf = BandBuffer::<3>::new(bufs.acc, bufs.cover, band).map_err(|_| FrameError)?;
-        buf.clear([0; 3]);
-        for t in tris {
-            triangle_rgb(t, false)
-                .draw(&mut buf, &aa)
-                .map_err(|_| FrameError)?;
-        }
-        let rows = bufs.out16.chunks_exact_mut(ROW_LEN);
-        for (y, out) in (band.y0..band.y0 + i32::from(band.rows)).zip(rows) {
-            buf.resolve_row(y, &mut bufs.row[..]);
-            code_row(&RGB565, &bufs.row[..], out);
-        }
-        black_box(&bufs.out16[..]);
-    }
+    let mut r = FrameRenderer::<1>::new(
+        &mut *bufs.acc,
+        &mut *bufs.cover,
+        &mut *bufs.slots1,
+        FRAME,
+        FRAME,
+        band_rows,
+    )
+    .map_err(|_| FrameError)?;
+    let mut sink = BandStream::new(&mut *bufs.out8, u32::from(FRAME), u32::from(FRAME));
+    let report = r
+        .render(&mut sink, &GRAY8, [0], |c| {
+            for t in tris {
+                c.fill_triangle(vertices(t), [[t.gray()]; 3], Blend::Over, Opacity::OPAQUE)?;
+            }
+            Ok::<(), softedge::DrawError>(())
+        })
+        .map_err(|_| FrameError)?;
+    black_box(report);
+    black_box(sink.pixels());
     Ok(())
 }

@@ -95,6 +95,67 @@ where
     }
 }
 
+/// What a DMA display takes from a band renderer: each `fill_contiguous`
+/// sets the window (here: nothing to do) and streams the colours in
+/// order into one band's buffer of raw pixels, which a real driver hands
+/// to the SPI DMA; any band of a `width x height` display.
+pub struct BandStream<'a, C: IntoStorage> {
+    px: &'a mut [C::Storage],
+    width: u32,
+    height: u32,
+    color: PhantomData<C>,
+}
+
+impl<'a, C: IntoStorage> BandStream<'a, C> {
+    /// A stream into `px` (as many pixels as the largest band).
+    pub fn new(px: &'a mut [C::Storage], width: u32, height: u32) -> Self {
+        Self {
+            px,
+            width,
+            height,
+            color: PhantomData,
+        }
+    }
+
+    /// The last band's raw pixels, row after row.
+    pub fn pixels(&self) -> &[C::Storage] {
+        &self.px[..]
+    }
+}
+
+impl<C: IntoStorage> OriginDimensions for BandStream<'_, C> {
+    fn size(&self) -> Size {
+        Size::new(self.width, self.height)
+    }
+}
+
+impl<C> DrawTarget for BandStream<'_, C>
+where
+    C: PixelColor + IntoStorage,
+{
+    type Color = C;
+    type Error = Infallible;
+
+    /// Single pixels are not what a band renderer sends: dropped.
+    fn draw_iter<I>(&mut self, _pixels: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = Pixel<C>>,
+    {
+        Ok(())
+    }
+
+    /// A window's colours, in order, into the buffer (the DMA's source).
+    fn fill_contiguous<I>(&mut self, _area: &Rectangle, colors: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = C>,
+    {
+        for (slot, c) in self.px.iter_mut().zip(colors) {
+            *slot = c.into_storage();
+        }
+        Ok(())
+    }
+}
+
 /// Width and height of [`Framebuffer`].
 pub const FB_SIDE: usize = 240;
 /// Pixels of [`Framebuffer`].

@@ -13,7 +13,7 @@
 
 use softedge_workloads::render::eg_side::{self, StockFramebuffer, Targets};
 use softedge_workloads::render::softedge_side::{
-    self, Buffers, ACC_LEN, COVER_LEN, OUT_LEN, ROW_LEN,
+    self, Buffers, ACC_LEN, COVER_LEN, OUT_LEN, SLOTS,
 };
 use softedge_workloads::render::targets::{Framebuffer, FB_LEN};
 use softedge_workloads::{Tri, Workload, CLASSES, COUNT, SCREEN};
@@ -54,11 +54,11 @@ impl Renderer {
 
     fn label(self) -> &'static str {
         match self.name() {
-            "aa_rgb" => "softedge AA flat RGB, Rgb565 (`flush`)",
-            "aa_gouraud" => "softedge AA Gouraud RGB, Rgb565 (`flush`)",
-            "aa_gray" => "softedge AA gray, Gray8 (`flush`)",
-            "aliased_rgb" => "softedge aliased flat RGB, Rgb565 (`flush`)",
-            "aa_rgb_rows" => "softedge AA flat RGB, Rgb565 (`resolve_row` + `code_row`)",
+            "aa_rgb" => "softedge AA flat RGB, Rgb565",
+            "aa_gouraud" => "softedge AA Gouraud RGB, Rgb565",
+            "aa_gray" => "softedge AA gray, Gray8",
+            "aliased_rgb" => "softedge aliased flat RGB, Rgb565",
+            "aa_rgb_nocache" => "softedge AA flat RGB, Rgb565, no walk cache",
             "eg_fill" => "e-g `Triangle` fill, framebuffer with slice `fill_solid`",
             "eg_stock_fb" => "e-g `Triangle` fill, e-g `Framebuffer` (`draw_iter`)",
             "ts_aa" => "tiny-skia `fill_path`, anti-aliased, RGBA8888 `Pixmap`",
@@ -81,7 +81,8 @@ struct Job {
     cover: Vec<i32>,
     out16: Vec<u16>,
     out8: Vec<u8>,
-    row: Box<[[u16; 3]; ROW_LEN]>,
+    slots3: Vec<softedge::canvas::WalkSlot<3>>,
+    slots1: Vec<softedge::canvas::WalkSlot<1>>,
     fb: Box<[u16; FB_LEN]>,
     stock: Box<StockFramebuffer>,
     pixmap: tiny_skia::Pixmap,
@@ -113,7 +114,8 @@ impl Job {
             cover: vec![0; COVER_LEN],
             out16: vec![0; OUT_LEN],
             out8: vec![0; OUT_LEN],
-            row: Box::new([[0; 3]; ROW_LEN]),
+            slots3: vec![softedge::canvas::WalkSlot::EMPTY; SLOTS],
+            slots1: vec![softedge::canvas::WalkSlot::EMPTY; SLOTS],
             fb: Box::new([0; FB_LEN]),
             stock: Box::new(StockFramebuffer::new()),
             pixmap: tiny_skia::Pixmap::new(240, 240)?,
@@ -150,7 +152,8 @@ fn workload_frame(job: &mut Job) -> bool {
                 cover: &mut job.cover,
                 out16: &mut job.out16,
                 out8: &mut job.out8,
-                row: &mut job.row,
+                slots3: &mut job.slots3,
+                slots1: &mut job.slots1,
             };
             softedge_side::frame(r, job.tris, job.rows, &mut bufs).is_ok()
         }
@@ -227,7 +230,7 @@ pub fn table(callgrind: impl Fn(&[&str]) -> Result<u64, String>) -> Result<(), S
         };
         let fixed = measure(r, "empty", 0, rows)?;
         print!("| {} | {} ", r.label(), mega(fixed));
-        let classes = r != Renderer::Softedge(softedge_side::Renderer::AaFlatRgbRows);
+        let classes = r != Renderer::Softedge(softedge_side::Renderer::AaFlatRgbNoCache);
         for w in CLASSES {
             if classes {
                 let one = measure(r, w.name, 1, rows)?;
