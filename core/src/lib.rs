@@ -29,6 +29,12 @@
 //! 9. `eg` (feature `embedded-graphics`, on by default): flushing each
 //!    finished band to any embedded-graphics `DrawTarget`.
 //!
+//! Colours come in through [`color`]: sRGB colours (embedded-graphics
+//! colour types, 8-bit triples, `#rrggbb`) decoded to the linear 12-bit
+//! intensity every stage works in, or their luminance on one channel.
+//! Every error type prints (`Display`, `core::error::Error`) and, with the
+//! `defmt` feature, logs (`defmt::Format`).
+//!
 //! ```
 //! use softedge::{BandBuffer, Bands, RenderStyle, SubPoint, Triangle};
 //!
@@ -55,6 +61,7 @@
 //! assert!(total > 0);
 //! ```
 #![no_std]
+#![cfg_attr(docsrs, feature(doc_cfg))]
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 // Per-channel loops index several arrays of the same length at once.
@@ -62,9 +69,12 @@
 
 mod arith;
 pub mod band;
+pub mod color;
 pub mod edge;
 #[cfg(feature = "embedded-graphics")]
+#[cfg_attr(docsrs, doc(cfg(feature = "embedded-graphics")))]
 pub mod eg;
+mod errors;
 pub mod geom;
 pub mod hsr;
 pub mod pixel_model;
