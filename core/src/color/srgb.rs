@@ -84,21 +84,51 @@ const fn table<const N: usize>() -> [u16; N] {
 
 /// 8-bit sRGB code (Rgb888, Gray8, `#rrggbb`) → linear 12-bit:
 /// `round(4095 * L(c / 255))`, halves up.
+///
+/// ```
+/// use softedge::color::SRGB8_TO_LIN12;
+/// assert_eq!([SRGB8_TO_LIN12[0], SRGB8_TO_LIN12[128], SRGB8_TO_LIN12[255]], [0, 884, 4095]);
+/// ```
 pub const SRGB8_TO_LIN12: [u16; 256] = table::<256>();
 /// 6-bit sRGB code (Rgb565's green, Rgb666) → linear 12-bit:
 /// `round(4095 * L(c / 63))`, halves up.
+///
+/// ```
+/// use softedge::color::SRGB6_TO_LIN12;
+/// assert_eq!([SRGB6_TO_LIN12[32], SRGB6_TO_LIN12[63]], [907, 4095]);
+/// ```
 pub const SRGB6_TO_LIN12: [u16; 64] = table::<64>();
 /// 5-bit sRGB code (Rgb565's red and blue, Rgb555) → linear 12-bit:
 /// `round(4095 * L(c / 31))`, halves up.
+///
+/// ```
+/// use softedge::color::SRGB5_TO_LIN12;
+/// assert_eq!([SRGB5_TO_LIN12[16], SRGB5_TO_LIN12[31]], [939, 4095]);
+/// ```
 pub const SRGB5_TO_LIN12: [u16; 32] = table::<32>();
 /// 4-bit sRGB code (Gray4) → linear 12-bit: `round(4095 * L(c / 15))`,
 /// halves up.
+///
+/// ```
+/// use softedge::color::SRGB4_TO_LIN12;
+/// assert_eq!([SRGB4_TO_LIN12[8], SRGB4_TO_LIN12[15]], [1008, 4095]);
+/// ```
 pub const SRGB4_TO_LIN12: [u16; 16] = table::<16>();
 /// 2-bit sRGB code (Gray2) → linear 12-bit: `round(4095 * L(c / 3))`,
 /// halves up.
+///
+/// ```
+/// use softedge::color::SRGB2_TO_LIN12;
+/// assert_eq!(SRGB2_TO_LIN12, [0, 372, 1646, 4095]);
+/// ```
 pub const SRGB2_TO_LIN12: [u16; 4] = table::<4>();
 
 /// Fraction bits of the luminance weights.
+///
+/// ```
+/// use softedge::color::srgb::{LUMA_BITS, LUMA_WEIGHTS};
+/// assert_eq!(LUMA_WEIGHTS.iter().sum::<u32>(), 1 << LUMA_BITS);
+/// ```
 pub const LUMA_BITS: u32 = 16;
 
 /// One Rec. 709 weight (`w / 10^4`) in units of `2^-16`, rounded to nearest.
