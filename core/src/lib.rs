@@ -29,6 +29,12 @@
 //! 9. `eg` (feature `embedded-graphics`, on by default): flushing each
 //!    finished band to any embedded-graphics `DrawTarget`.
 //!
+//! Colours come in through [`color`]: sRGB colours (embedded-graphics
+//! colour types, 8-bit triples, `#rrggbb`) decoded to the linear 12-bit
+//! intensity every stage works in, or their luminance on one channel.
+//! Every error type prints (`Display`, `core::error::Error`) and, with the
+//! `defmt` feature, logs (`defmt::Format`).
+//!
 //! ```
 //! use softedge::{BandBuffer, Bands, RenderStyle, SubPoint, Triangle};
 //!
@@ -54,7 +60,52 @@
 //! }
 //! assert!(total > 0);
 //! ```
+//!
+//! ## Features
+//!
+//! - `embedded-graphics` (default): the `eg` glue, the embedded-graphics
+//!   colour types of [`tone::format`] and [`dither`](tone::dither), and
+//!   [`IntoLinear`](color::IntoLinear) for embedded-graphics' colour types.
+//! - `defmt`: `defmt::Format` (defmt 1) for the public types, errors
+//!   included, so firmware can log them.
+//!
+//! ## References
+//!
+//! The methods come from five papers, called *seed 000* to *seed 004* in
+//! these docs and in the code's comments (equation and figure numbers are the
+//! papers' own):
+//!
+//! 1. **[seed 000]** A. M. Kovalev, A. S. Tokarev, «Синтез изображений без
+//!    элайсинга и оконтуривания» (*Image synthesis without aliasing and
+//!    contouring*), *Avtometriya* (Novosibirsk), 1990 (received 12 February
+//!    1990). Equal-energy filters and the accumulation `I += I_j S_j`
+//!    (eqs. 2-5), bed-of-nails filters (fig. 4), γ correction and contrast
+//!    (eqs. 6-8), bit depths (eqs. 9-10), logarithmic intensity codes
+//!    (eqs. 11-15, fig. 7).
+//! 2. **[seed 001]** A Ukrainian paper on combining, in one computation, the
+//!    addresses of an edge's pixels, their Gouraud intensities and their
+//!    covered areas (anti-aliasing by the Bresenham evaluation function with
+//!    additions only); author, title and venue are not preserved in the copy
+//!    the project worked from.
+//! 3. **[seed 002]** T. Naka, A. Nishimura, Y. Nakase (Matsushita Electric
+//!    Industrial Co., Information and Communications Research Center),
+//!    «高品質なCG画像生成におけるアンチエイリアシング手法» (*Anti-aliasing
+//!    technique for high quality computer graphics*), c. 1989-1990 (venue not
+//!    named in the copy; its latest reference is from 1989). The CIELAB
+//!    `L*`-adaptive 3x3 filter.
+//! 4. **[seed 003]** O. N. Romanyuk, O. V. Melnyk (Vinnytsia National
+//!    Technical University), «Особливості гексагональної моделі піксела»
+//!    (*Peculiarities of a hexagonal pixel model*), *Visnyk Khmelnytskoho
+//!    natsionalnoho universytetu* (Herald of Khmelnytskyi National
+//!    University), 2014 (printed 26 March 2014). Pixel models: hexagonal
+//!    pixels of 7 and 19 sub-pixels, the cone, Gaussian and Hamming filters.
+//! 5. **[seed 004]** «Удаление невидимых поверхностей и линий» (*Removal of
+//!    hidden surfaces and lines*), lecture 6 of a course of the Internet
+//!    University of Information Technologies (INTUIT, Moscow), published 20
+//!    October 2007, ISBN 978-5-94774-654-9. Warnock's subdivision,
+//!    Weiler–Atherton clipping, the z-buffer and its section mode.
 #![no_std]
+#![cfg_attr(docsrs, feature(doc_cfg))]
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 // Per-channel loops index several arrays of the same length at once.
@@ -63,9 +114,9 @@
 mod arith;
 pub mod band;
 pub mod canvas;
+pub mod color;
 pub mod edge;
-#[cfg(feature = "embedded-graphics")]
-pub mod eg;
+mod errors;
 pub mod geom;
 pub mod hsr;
 pub mod pixel_model;

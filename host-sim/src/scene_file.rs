@@ -9,6 +9,10 @@
 //!
 //! ## Decisions
 //!
+//! - **Colours.** A colour is linear 12-bit values (`[4095, 2048, 0]`, as
+//!   the engine takes them) or `"#rrggbb"`, an sRGB colour decoded by
+//!   `softedge::color`'s tables; on a one-channel display the hex form
+//!   gives its linear luminance.
 //! - **Order.** Primitives are accumulated in the order they appear in the
 //!   file, across tables: every table is read with its byte span and the
 //!   primitives are sorted by where their table starts. (Accumulation,
@@ -21,7 +25,8 @@
 //!   still renders.
 //! - **Rejected** (an error naming file, line, column and field): unknown
 //!   keys or tables, wrong types, NaN and infinities, coordinates beyond
-//!   `±COORD_LIMIT_PX` (2048 px), colours outside `0..=4095`, a colour
+//!   `±COORD_LIMIT_PX` (2048 px), colours outside `0..=4095`, hex colours
+//!   that are not `"#rrggbb"`, a colour
 //!   with the wrong number of channels (1 for gray and binary formats, 3
 //!   for RGB), wrong vertex counts, sizes out of range, and anything core
 //!   rejects when the primitive is drawn (a self-intersecting polygon) or
@@ -50,6 +55,7 @@ pub mod window;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
+use softedge::color::LinRgb;
 use softedge::hsr::DepthTriangle;
 use softedge::tone::{Curve, Gamma};
 use softedge::{
@@ -378,9 +384,14 @@ impl Checker<'_> {
             .collect()
     }
 
-    /// A colour of `C` linear 12-bit values.
+    /// A colour of `C` channels: linear 12-bit values as written, or
+    /// `"#rrggbb"` sRGB decoded by `softedge::color` (on one channel, its
+    /// linear luminance).
     fn color<const C: usize>(&self, v: &raw::Color, field: &str) -> Checked<[u16; C]> {
-        let list = v.get_ref();
+        let list = match v.get_ref() {
+            raw::ColorValue::Linear(list) => list,
+            raw::ColorValue::Hex(text) => return self.hex_color::<C>(text, v.span(), field),
+        };
         if list.len() != C {
             let why = if C == 1 {
                 "this display format has one channel (gray)"
@@ -396,6 +407,30 @@ impl Checker<'_> {
         let mut out = [0u16; C];
         for (k, (o, c)) in out.iter_mut().zip(list).enumerate() {
             *o = self.int(c, &format!("{field}[{k}]"), 0, i64::from(LIN_MAX))? as u16;
+        }
+        Ok(out)
+    }
+
+    /// `"#rrggbb"`: sRGB to linear 12-bit through `softedge::color`'s
+    /// tables; the luminance on a one-channel display.
+    fn hex_color<const C: usize>(
+        &self,
+        text: &str,
+        span: Range<usize>,
+        field: &str,
+    ) -> Checked<[u16; C]> {
+        let rgb = match LinRgb::from_hex(text) {
+            Ok(c) => c,
+            Err(e) => return self.err(span, field, format!("\"{text}\": {e}")),
+        };
+        let values = if C == 1 {
+            rgb.luminance().lin12().to_vec()
+        } else {
+            rgb.lin12().to_vec()
+        };
+        let mut out = [0u16; C];
+        for (o, v) in out.iter_mut().zip(values) {
+            *o = v;
         }
         Ok(out)
     }
@@ -804,6 +839,34 @@ mod tests {
         off.lightness_filter = false;
         assert!(!parse_str(HEAD).unwrap().lightness_filter);
         assert_ne!(on.render_linear().unwrap(), off.render_linear().unwrap());
+    }
+
+    #[test]
+    fn hex_colours_are_srgb_and_their_luminance_on_gray() {
+        // sRGB 0x80 is 884 / 4095 of the light; red's luminance 0.2126 * 4095.
+        let rgb =
+            "[display]\nwidth = 4\nheight = 4\nformat = \"rgb565\"\nbackground = \"#ff8000\"\n\
+                   [[triangle]]\npoints = [[0, 0], [4, 0], [0, 4]]\n\
+                   colors = [\"#808080\", [1, 2, 3], \"#FF0000\"]\n\
+                   [[line]]\nfrom = [0, 0]\nto = [4, 4]\ncolor = \"#000000\"\n";
+        let f = parse_str(rgb).unwrap();
+        let Frame::Rgb(s) = &f.frame else { panic!() };
+        assert_eq!(s.background, [4095, 884, 0]);
+        let Primitive::Triangle(t) = &s.primitives[0] else {
+            panic!()
+        };
+        assert_eq!(t.colors, [[884; 3], [1, 2, 3], [4095, 0, 0]]);
+        let gray = format!(
+            "{HEAD}background = \"#808080\"\n\
+             [[polygon]]\npoints = [[0, 0], [4, 0], [0, 4]]\ncolor = \"#ff0000\"\n"
+        );
+        let f = parse_str(&gray).unwrap();
+        let Frame::Gray(s) = &f.frame else { panic!() };
+        assert_eq!(s.background, [884]);
+        let Primitive::Polygon { colors, .. } = &s.primitives[0] else {
+            panic!()
+        };
+        assert_eq!(*colors, PolyColors::Flat([871]));
     }
 
     #[test]

@@ -1,4 +1,4 @@
-//! softedge's embedded-graphics glue (`softedge::eg::Renderer`) drawing a
+//! softedge's frame loop (`softedge::render::Renderer`) drawing a
 //! scene file into a display type from another crate: the simulator's
 //! `SimulatorDisplay`, wrapped in [`BandsOnly`], a `DrawTarget` that
 //! accepts whole bands through `fill_contiguous` and panics on anything
@@ -17,8 +17,9 @@ use embedded_graphics::prelude::{DrawTarget, IntoStorage, OriginDimensions, Poin
 use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::Pixel;
 use embedded_graphics_simulator::SimulatorDisplay;
-use softedge::eg::Renderer;
+use softedge::render::{RenderError, Renderer};
 use softedge::tone::format::{Gray8Format, Rgb565Format, ToneFormat};
+use softedge::tone::Profile;
 use softedge::BandBuffer;
 use softedge_sim::scene::Scene;
 use softedge_sim::scene_file::{self, DisplayFormat, Frame, SceneFile};
@@ -113,7 +114,7 @@ fn example(name: &str) -> SceneFile {
 }
 
 /// Renders `scene` into a `w x h` simulator display through
-/// `softedge::eg::Renderer` in bands of `band_rows`, colours from
+/// `softedge::render::Renderer` in bands of `band_rows`, colours from
 /// `format`; returns the display and the bands it received.
 fn render_to_display<const C: usize, F>(
     scene: &Scene<C>,
@@ -123,6 +124,7 @@ fn render_to_display<const C: usize, F>(
 where
     F: ToneFormat<C>,
     F::Color: PixelColor + Default,
+    for<'f> &'f F: Profile<C, Color = F::Color>,
 {
     let (w, h) = (scene.width, scene.height);
     let mut acc = vec![0i32; BandBuffer::<C>::acc_len(w, band_rows)];
@@ -132,18 +134,15 @@ where
         F::Color::default(),
     );
     let mut target = BandsOnly::new(display);
-    Renderer::<C>::new(&mut acc, &mut cover, w, h, band_rows)
-        .render(
-            &mut target,
-            scene.background,
-            |band| {
-                scene
-                    .primitives
-                    .iter()
-                    .try_for_each(|p| p.draw(band, &scene.style))
-            },
-            |px| format.color(px),
-        )
+    let mut slots = vec![softedge::canvas::WalkSlot::<C>::EMPTY; 64];
+    Renderer::<C>::new(&mut acc, &mut cover, &mut slots, w, h, band_rows)
+        .unwrap()
+        .render(&mut target, format, scene.background, |canvas| {
+            scene
+                .primitives
+                .iter()
+                .try_for_each(|p| p.draw(canvas.buffer(), &scene.style))
+        })
         .unwrap();
     (target.inner, target.bands)
 }
@@ -217,14 +216,26 @@ fn bands_only_refuses_per_pixel_writes() {
 #[test]
 #[should_panic(expected = "outside the display")]
 fn bands_only_refuses_writes_outside_the_display() {
-    // A renderer for a frame taller than the display writes below it.
+    let mut t = BandsOnly::new(SimulatorDisplay::<Gray8>::new(Size::new(4, 4)));
+    let band = Rectangle::new(Point::new(0, 2), Size::new(4, 4));
+    let _ = t.fill_contiguous(&band, [Gray8::new(0); 16]);
+}
+
+#[test]
+fn a_frame_taller_than_the_display_is_refused_before_anything_is_sent() {
     let mut acc = vec![0i32; BandBuffer::<1>::acc_len(4, 4)];
     let mut cover = vec![0i32; BandBuffer::<1>::cover_len(4, 4)];
     let mut t = BandsOnly::new(SimulatorDisplay::<Gray8>::new(Size::new(4, 4)));
-    let _ = Renderer::<1>::new(&mut acc, &mut cover, 4, 6, 4).render(
-        &mut t,
-        [0],
-        |_| Ok(()),
-        |[v]| Gray8::new((v >> 4) as u8),
+    static GRAY: Gray8Format = Gray8Format::new(softedge::tone::Curve::Srgb);
+    let r = Renderer::<1>::new(&mut acc, &mut cover, &mut [], 4, 6, 4)
+        .unwrap()
+        .render(&mut t, &GRAY, [0], |_| Ok::<(), softedge::DrawError>(()));
+    assert_eq!(
+        r,
+        Err(RenderError::Size {
+            frame: (4, 6),
+            display: (4, 4)
+        })
     );
+    assert!(t.bands.is_empty());
 }

@@ -131,6 +131,26 @@ fn wrong_channel_count_is_named() {
 }
 
 #[test]
+fn bad_hex_colour_is_named() {
+    let tri = "[[triangle]]\npoints = [[0, 0], [4, 0], [0, 4]]\n";
+    let text = format!("{HEAD}{tri}color = \"#12345\"\n");
+    expect(&text, 7, "triangle[0].color", "has 7 characters, not 6");
+    let text = format!("{HEAD}{tri}color = \"808080\"\n");
+    expect(&text, 7, "triangle[0].color", "must start with `#`");
+    let text = format!("{HEAD_RGB}{tri}colors = [[1, 2, 3], \"#12x456\", \"#000000\"]\n");
+    expect(
+        &text,
+        7,
+        "triangle[0].colors[1]",
+        "`x` at byte 3 is not a hex digit",
+    );
+    let text = format!("{HEAD_RGB}background = \"#fff\"\n");
+    expect(&text, 5, "display.background", "not 4");
+    let text = format!("{HEAD}{tri}color = 7\n");
+    expect(&text, 7, "triangle[0].color", "\"#rrggbb\"");
+}
+
+#[test]
 fn wrong_vertex_or_colour_count_is_named() {
     let text = format!("{HEAD}[[triangle]]\npoints = [[0, 0], [4, 0]]\ncolor = [1]\n");
     expect(&text, 6, "triangle[0].points", "3 points");

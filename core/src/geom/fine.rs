@@ -109,6 +109,7 @@ impl From<SubPoint> for FinePoint {
 }
 
 #[cfg(feature = "embedded-graphics")]
+#[cfg_attr(docsrs, doc(cfg(feature = "embedded-graphics")))]
 impl From<embedded_graphics_core::geometry::Point> for FinePoint {
     /// The centre of the pixel `p`, as embedded-graphics' primitives read
     /// their points.

@@ -96,6 +96,7 @@ impl SubPoint {
 }
 
 #[cfg(feature = "embedded-graphics")]
+#[cfg_attr(docsrs, doc(cfg(feature = "embedded-graphics")))]
 impl From<embedded_graphics_core::geometry::Point> for SubPoint {
     /// The top-left corner of the pixel `p`.
     fn from(p: embedded_graphics_core::geometry::Point) -> Self {

@@ -22,6 +22,7 @@ pub trait ToneFormat<const C: usize> {
 
     /// The embedded-graphics colour of a pixel.
     #[cfg(feature = "embedded-graphics")]
+    #[cfg_attr(docsrs, doc(cfg(feature = "embedded-graphics")))]
     type Color: embedded_graphics_core::pixelcolor::PixelColor;
 
     /// The code of one pixel (channels above 4095 are clamped).
@@ -29,6 +30,7 @@ pub trait ToneFormat<const C: usize> {
 
     /// The colour of one pixel (channels above 4095 are clamped).
     #[cfg(feature = "embedded-graphics")]
+    #[cfg_attr(docsrs, doc(cfg(feature = "embedded-graphics")))]
     fn color(&self, px: [u16; C]) -> Self::Color;
 }
 
@@ -66,6 +68,7 @@ pub fn code_row<F: ToneFormat<C>, const C: usize>(
 /// assert_eq!(out, [Rgb565::RED, Rgb565::WHITE]);
 /// ```
 #[cfg(feature = "embedded-graphics")]
+#[cfg_attr(docsrs, doc(cfg(feature = "embedded-graphics")))]
 pub fn color_row<F: ToneFormat<C>, const C: usize>(
     format: &F,
     row: &[[u16; C]],

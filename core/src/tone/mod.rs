@@ -32,7 +32,7 @@
 
 pub mod bits;
 pub mod dither;
-mod fixpow;
+pub(crate) mod fixpow;
 pub mod format;
 pub mod gamma;
 pub mod log_code;

@@ -12,8 +12,8 @@ pub type Num = Spanned<f64>;
 pub type Int = Spanned<i64>;
 /// A list of numbers (a point, a vector) with its place.
 pub type Nums = Spanned<Vec<Num>>;
-/// A colour: one linear 12-bit value per channel.
-pub type Color = Spanned<Vec<Int>>;
+/// A colour with its place in the file.
+pub type Color = Spanned<ColorValue>;
 /// A list of colours (one per vertex).
 pub type Colors = Spanned<Vec<Color>>;
 
@@ -73,6 +73,44 @@ impl<'de> Deserialize<'de> for GammaValue {
             }
             fn visit_str<E>(self, v: &str) -> Result<GammaValue, E> {
                 Ok(GammaValue::Name(v.to_string()))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+/// A colour as written: `[4095, 2048, 0]` (linear 12-bit, one value per
+/// channel) or `"#rrggbb"` (sRGB, checked and converted in [`super`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum ColorValue {
+    /// Linear 12-bit values, one per channel.
+    Linear(Vec<Int>),
+    /// `#rrggbb` text, sRGB.
+    Hex(String),
+}
+
+impl<'de> Deserialize<'de> for ColorValue {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> serde::de::Visitor<'de> for V {
+            type Value = ColorValue;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str(
+                    "a colour: linear 12-bit values such as [4095, 2048, 0], or sRGB \"#rrggbb\"",
+                )
+            }
+            fn visit_str<E>(self, v: &str) -> Result<ColorValue, E> {
+                Ok(ColorValue::Hex(v.to_string()))
+            }
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> Result<ColorValue, A::Error> {
+                let mut values = Vec::new();
+                while let Some(v) = seq.next_element::<Int>()? {
+                    values.push(v);
+                }
+                Ok(ColorValue::Linear(values))
             }
         }
         d.deserialize_any(V)
