@@ -67,6 +67,7 @@ pub mod edge;
 pub mod eg;
 pub mod geom;
 pub mod hsr;
+pub mod path;
 pub mod pixel_model;
 pub mod postfilter;
 pub mod raster;
