@@ -1,7 +1,7 @@
 //! Circular and elliptic arcs: area-preserving polygons for filling, and
 //! cubic Béziers for path descriptions.
 //!
-//! Takes an [`EllipseFrame`] (centre, semi-axes, rotation) and a start
+//! Takes an `EllipseFrame` (centre, semi-axes, rotation) and a start
 //! angle and sweep (binary units); gives either the vertices of a polygon
 //! on it whose area equals the exact area of the ellipse (or of the
 //! sector of the arc), or a chain of cubic Béziers through a
@@ -48,7 +48,7 @@
 //!
 //! ## Cubic Béziers
 //!
-//! [`arc_cubics`] approximates an arc by cubics with the classic control
+//! `arc_cubics` approximates an arc by cubics with the classic control
 //! length `k = 4/3 tan(phi/4)` per piece of angle `phi`: the curve bulges
 //! outward by at most `e(phi) r`, `e(phi) = 2 sin^6(phi/4) / (27 cos^2(phi/4))`
 //! (`e(pi/2) = 2.7253e-4`, and `e(phi) / phi^6` grows with `phi`, so

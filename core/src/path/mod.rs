@@ -13,7 +13,7 @@
 //! - **Closed contours** of non-zero-length segments, every endpoint inside
 //!   the coordinate range (`|x|, |y| <= FINE_LIMIT`), points beyond it
 //!   clamped without changing any winding number inside the range
-//!   ([`segment`](self::segment)). Segments come in no particular order.
+//!   ([`segment`]). Segments come in no particular order.
 //! - **Orientation**: a filled region is bounded clockwise on screen (y
 //!   down), i.e. its shoelace sum `sum x_i y_(i+1) - x_(i+1) y_i` is
 //!   positive and the winding number inside is `+1`; holes (the inside of
@@ -43,7 +43,7 @@
 //! Circles, ellipses, arcs, sectors and rounded corners are polygons whose
 //! vertices are placed so that the polygon's area equals the exact area
 //! (before rounding): an inscribed polygon would lose area. See
-//! [`bezier`](self::bezier) and [`arc`](self::arc) for the bounds and the
+//! [`bezier`] and [`arc`] for the bounds and the
 //! segment counts.
 //!
 //! ## Units
@@ -56,10 +56,13 @@
 mod angle;
 pub mod arc;
 pub mod bezier;
+#[cfg(feature = "embedded-graphics")]
+pub mod eg;
 mod flattener;
 pub mod segment;
 mod shape;
 pub mod stroke;
+pub mod svg;
 mod trig;
 mod vector;
 

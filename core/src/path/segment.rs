@@ -12,7 +12,7 @@
 //!   `+1`);
 //! - no segment has zero length;
 //! - every endpoint lies in the accepted range, `|x|, |y| <=`
-//!   [`FINE_LIMIT`](crate::geom::FINE_LIMIT).
+//!   [`FINE_LIMIT`].
 //!
 //! ## Clamping to the range, exactly
 //!

@@ -2,13 +2,16 @@
 
 use crate::geom::{FinePoint, PathSink};
 use crate::path::segment::SegmentSink;
-use crate::path::Tolerance;
+use crate::path::{StrokeAlignment, StrokeError, StrokeStyle, Stroker, Tolerance};
 
 use super::Shape;
 
 /// An open path through `vertices`: any point type that converts to
 /// [`FinePoint`] (embedded-graphics' `Point`s convert to their pixel
-/// centres). Filled, it is the polygon (closed by its last edge).
+/// centres). Filled, it is the polygon (closed by its last edge). Its
+/// stroke is always centred: an open path has no inside (embedded-graphics
+/// ignores the alignment of open shapes too; the [`Stroker`] offers
+/// one-sided strokes of any path).
 ///
 /// ```
 /// use softedge::geom::FinePoint;
@@ -19,6 +22,8 @@ use super::Shape;
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Polyline<'a, P = FinePoint> {
+    /// An offset added to every vertex (embedded-graphics' `translate`).
+    pub translate: FinePoint,
     /// The vertices, in order.
     pub vertices: &'a [P],
 }
@@ -26,13 +31,20 @@ pub struct Polyline<'a, P = FinePoint> {
 impl<'a, P: Copy + Into<FinePoint>> Polyline<'a, P> {
     /// A polyline through `vertices`.
     pub const fn new(vertices: &'a [P]) -> Self {
-        Self { vertices }
+        Self {
+            translate: FinePoint::new(0, 0),
+            vertices,
+        }
     }
 }
 
 impl<P: Copy + Into<FinePoint>> Shape for Polyline<'_, P> {
     fn describe<S: PathSink + ?Sized>(&self, sink: &mut S) {
-        let mut it = self.vertices.iter().map(|&p| p.into());
+        let t = self.translate;
+        let mut it = self.vertices.iter().map(|&p| {
+            let p: FinePoint = p.into();
+            FinePoint::new(p.x.saturating_add(t.x), p.y.saturating_add(t.y))
+        });
         if let Some(first) = it.next() {
             sink.move_to(first);
             for p in it {
@@ -40,9 +52,32 @@ impl<P: Copy + Into<FinePoint>> Shape for Polyline<'_, P> {
             }
         }
     }
+
+    fn stroke_with<S: SegmentSink + ?Sized>(
+        &self,
+        style: &StrokeStyle<'_>,
+        tol: Tolerance,
+        sink: &mut S,
+    ) -> Result<(), StrokeError> {
+        centred_stroke(self, style, tol, sink)
+    }
 }
 
-/// A straight line between two points (no interior: its fill is empty).
+/// Strokes an open shape, centred whatever the style's alignment.
+fn centred_stroke<T: Shape + ?Sized, S: SegmentSink + ?Sized>(
+    shape: &T,
+    style: &StrokeStyle<'_>,
+    tol: Tolerance,
+    sink: &mut S,
+) -> Result<(), StrokeError> {
+    let style = style.with_alignment(StrokeAlignment::Centre);
+    let mut s = Stroker::with_tolerance(&style, tol, sink);
+    shape.describe(&mut s);
+    s.finish()
+}
+
+/// A straight line between two points (no interior: its fill is empty;
+/// its stroke is centred, as for [`Polyline`]).
 ///
 /// ```
 /// use softedge::geom::FinePoint;
@@ -74,4 +109,13 @@ impl Shape for Line {
 
     /// Nothing: a line has no area.
     fn fill_with<S: SegmentSink + ?Sized>(&self, _tol: Tolerance, _sink: &mut S) {}
+
+    fn stroke_with<S: SegmentSink + ?Sized>(
+        &self,
+        style: &StrokeStyle<'_>,
+        tol: Tolerance,
+        sink: &mut S,
+    ) -> Result<(), StrokeError> {
+        centred_stroke(self, style, tol, sink)
+    }
 }

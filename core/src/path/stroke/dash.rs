@@ -2,7 +2,7 @@
 //!
 //! Takes a [`Dash`] (lengths of alternating dashes and gaps in fine units,
 //! and an offset into the pattern) and the pieces of one contour in order;
-//! gives the [`Outline`] its runs: each dash becomes a run of (parts of)
+//! gives the outline ([`outline`](super::outline)) its runs: each dash becomes a run of (parts of)
 //! pieces with caps at both ends, and joins inside it where it passes a
 //! vertex. The pattern restarts at every contour (SVG); an odd-length
 //! pattern is repeated twice (SVG); a pattern with no positive gap is a

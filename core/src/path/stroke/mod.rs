@@ -13,7 +13,7 @@
 //! 1. Each contour is cut into *pieces*: a straight segment gives one
 //!    rectangle; a curve is flattened as in [`bezier`](crate::path::bezier)
 //!    (with extra segments for wide strokes, so that the offset curve is
-//!    within the tolerance too: see [`turn_count`]) and each chord gives a
+//!    within the tolerance too: see `bezier::turn_count`) and each chord gives a
 //!    quadrilateral between the curve's true normals at its two vertices.
 //!    Where that quadrilateral would fold (the stroke is wider than the
 //!    curve's radius, or a cusp), the chord's rectangle is used instead and

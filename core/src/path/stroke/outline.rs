@@ -2,7 +2,7 @@
 //! contours.
 //!
 //! Takes *runs* (maximal stretches of the stroke without a gap: a whole
-//! contour, or one dash) as a sequence of [`Piece`]s, each the body of one
+//! contour, or one dash) as a sequence of pieces, each the body of one
 //! segment of the flattened path; gives the [`SegmentSink`] the boundary
 //! of the union of the runs' pieces.
 //!
