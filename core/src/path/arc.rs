@@ -135,7 +135,10 @@ impl EllipseFrame {
         let v = (self.b_q8 * y) >> 30;
         let px = self.c_q8.x + round_shift(u * self.rot.x - v * self.rot.y, 30);
         let py = self.c_q8.y + round_shift(u * self.rot.y + v * self.rot.x, 30);
-        Pt::new(round_shift(px, 8), round_shift(py, 8))
+        // Halves round up (not away from zero): a shape moved by whole
+        // fine units then moves every vertex by exactly as much, so its
+        // area is the same bits wherever it lies.
+        Pt::new((px + 128) >> 8, (py + 128) >> 8)
     }
 
     /// The point at parameter `t` (binary units), radially scaled by

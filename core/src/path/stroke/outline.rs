@@ -350,7 +350,8 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
             // Outer: the m side, forward from A to B; the outward normals
             // are -na, -nb. Inner: the p side.
             self.wedge(v, a.em, b.sm, neg(na), neg(nb), self.sides.m, join);
-            if !cut_inner(a.sp, &mut a.ep, &mut b.sp, b.ep) {
+            let i = inner_corner(v, na, nb, self.sides.p, 1);
+            if !cut_inner(a.sp, &mut a.ep, &mut b.sp, b.ep, i) {
                 self.seg(b.sp, v);
                 self.seg(v, a.ep);
             }
@@ -358,7 +359,8 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
             // Outer: the p side, emitted backward from B to A; outward
             // normals nb then na. Inner: the m side.
             self.wedge(v, b.sp, a.ep, nb, na, self.sides.p, join);
-            if !cut_inner(a.sm, &mut a.em, &mut b.sm, b.em) {
+            let i = inner_corner(v, na, nb, self.sides.m, -1);
+            if !cut_inner(a.sm, &mut a.em, &mut b.sm, b.em, i) {
                 self.seg(a.em, v);
                 self.seg(v, b.sm);
             }
@@ -459,37 +461,51 @@ fn neg(u: Unit) -> Unit {
     Unit { x: -u.x, y: -u.y }
 }
 
-/// Where the inner edges `a0 -> a1` (of the piece before the vertex) and
-/// `b0 -> b1` (after it) cross, if the crossing lies on both: then the
-/// end of the first and the start of the second move there (`a1`, `b0`
-/// replaced) and the pieces tile. False when they do not cross inside
-/// both edges (or either edge is a point).
-fn cut_inner(a0: Pt, a1: &mut Pt, b0: &mut Pt, b1: Pt) -> bool {
-    if *a1 == *b0 {
-        return true;
+/// The inner corner at `v` of a turn between the unit normals `na`, `nb`,
+/// `h_q1` half fine units to the side `side` (+1: the `p` side, -1: `m`):
+/// where the two inner offset lines cross,
+/// `v + side h (na + nb) / (1 + na.nb)` (the miter formula, well
+/// conditioned even at slight turns, unlike intersecting two nearly
+/// parallel rounded edges). `None` near a U-turn.
+fn inner_corner(v: Pt, na: Unit, nb: Unit, h_q1: i64, side: i64) -> Option<Pt> {
+    let one_plus = Q30 + na.dot(nb);
+    // Beyond about 179 degrees the corner runs off to infinity.
+    if one_plus < Q30 >> 14 {
+        return None;
     }
-    let (da, db) = (a1.sub(a0), b1.sub(*b0));
-    let den = da.cross(db);
-    if den == 0 {
+    let den = 2 * i128::from(one_plus);
+    let k = i128::from(side * h_q1);
+    Some(Pt::new(
+        v.x + div_round(i128::from(na.x + nb.x) * k, den) as i64,
+        v.y + div_round(i128::from(na.y + nb.y) * k, den) as i64,
+    ))
+}
+
+/// Moves the end `a1` of the inner edge `a0 -> a1` (the piece before the
+/// vertex) and the start `b0` of `b0 -> b1` (after it) to the inner
+/// corner `i`, if `i` lies on both edges (within two fine units beyond
+/// either end: at a slight turn the kite is no bigger than the grid
+/// rounding): the pieces then tile. False otherwise (the kite reaches
+/// past a short piece), and nothing moves.
+fn cut_inner(a0: Pt, a1: &mut Pt, b0: &mut Pt, b1: Pt, i: Option<Pt>) -> bool {
+    let Some(i) = i else {
         return false;
-    }
-    let r = b0.sub(a0);
-    let (t, u) = (r.cross(db), r.cross(da));
-    // t / den and u / den in [0, 1].
-    let inside = |n: i128| {
-        if den > 0 {
-            n >= 0 && n <= den
-        } else {
-            n <= 0 && n >= den
-        }
     };
-    if !(inside(t) && inside(u)) {
+    const SLACK: i128 = 2;
+    // The parameter of i's projection on an edge, in [-2/len, 1 + 2/len].
+    let on = |p0: Pt, p1: Pt| {
+        let d = p1.sub(p0);
+        let l2 = d.dot(d);
+        if l2 == 0 {
+            return i == p0;
+        }
+        let t = i.sub(p0).dot(d); // t / l2 is the parameter
+        let len = i128::from(d.len().max(1));
+        t * len >= -SLACK * l2 && t * len <= l2 * (len + SLACK)
+    };
+    if !(on(a0, *a1) && on(*b0, b1)) {
         return false;
     }
-    let i = Pt::new(
-        a0.x + div_round(i128::from(da.x) * t, den) as i64,
-        a0.y + div_round(i128::from(da.y) * t, den) as i64,
-    );
     *a1 = i;
     *b0 = i;
     true
@@ -512,18 +528,32 @@ mod tests {
     }
 
     #[test]
-    fn inner_edges_meet_inside_both() {
-        let mut a1 = Pt::new(10, 10);
-        let mut b0 = Pt::new(-10, 10);
+    fn inner_corners_lie_on_both_edges_or_nowhere() {
+        // Right, then down (a right turn): the inner side is below-left.
+        let (na, nb) = (Unit { x: 0, y: Q30 }, Unit { x: -Q30, y: 0 });
+        let v = Pt::new(1000, 0);
+        let i = inner_corner(v, na, nb, 200, 1); // h = 100
+        assert_eq!(i, Some(Pt::new(900, 100)));
+        let (mut a1, mut b0) = (Pt::new(1000, 100), Pt::new(900, 0));
         assert!(cut_inner(
-            Pt::new(-100, 0),
+            Pt::new(0, 100),
             &mut a1,
             &mut b0,
-            Pt::new(100, 0)
+            Pt::new(900, 1000),
+            i
         ));
-        assert_eq!(a1, Pt::new(0, 9)); // (0, 100/11)
-        let mut a1 = Pt::new(10, 0);
-        let mut b0 = Pt::new(20, 0);
-        assert!(!cut_inner(Pt::new(0, 0), &mut a1, &mut b0, Pt::new(30, 0)));
+        assert_eq!((a1, b0), (Pt::new(900, 100), Pt::new(900, 100)));
+        // The piece before is shorter than the kite: nothing moves.
+        let (mut a1, mut b0) = (Pt::new(1000, 100), Pt::new(900, 0));
+        assert!(!cut_inner(
+            Pt::new(950, 100),
+            &mut a1,
+            &mut b0,
+            Pt::new(900, 1000),
+            i
+        ));
+        assert_eq!(a1, Pt::new(1000, 100));
+        // A U-turn has no inner corner.
+        assert_eq!(inner_corner(v, na, neg(na), 200, 1), None);
     }
 }
