@@ -384,6 +384,40 @@ impl BezierIndex {
     }
 }
 
+/// Distance from `p` to the ellipse about `c` with semi-axes `a`, `b`
+/// rotated by `rot` radians, and whether `p` is inside: dense parameter
+/// sampling, then golden-section refinement.
+pub fn ellipse_distance(p: (f64, f64), c: (f64, f64), a: f64, b: f64, rot: f64) -> (f64, bool) {
+    use std::f64::consts::PI;
+    let (cs, sn) = (rot.cos(), rot.sin());
+    let (u, v) = (
+        (p.0 - c.0) * cs + (p.1 - c.1) * sn,
+        -(p.0 - c.0) * sn + (p.1 - c.1) * cs,
+    );
+    let d = |t: f64| (a * t.cos() - u).hypot(b * t.sin() - v);
+    let n = 2000;
+    let (mut bt, mut bd) = (0.0, f64::INFINITY);
+    for i in 0..n {
+        let t = 2.0 * PI * f64::from(i) / f64::from(n);
+        if d(t) < bd {
+            (bt, bd) = (t, d(t));
+        }
+    }
+    let (mut lo, mut hi) = (bt - 2.0 * PI / f64::from(n), bt + 2.0 * PI / f64::from(n));
+    for _ in 0..60 {
+        let (m1, m2) = (lo + (hi - lo) * 0.382, lo + (hi - lo) * 0.618);
+        if d(m1) < d(m2) {
+            hi = m2;
+        } else {
+            lo = m1;
+        }
+    }
+    (
+        d((lo + hi) / 2.0).min(bd),
+        (u / a).powi(2) + (v / b).powi(2) < 1.0,
+    )
+}
+
 /// The area of the disc `(cx, cy, r)` inside the box, exactly (closed form
 /// of the integral of the chord length).
 pub fn disc_box_area(cx: f64, cy: f64, r: f64, x0: f64, y0: f64, x1: f64, y1: f64) -> f64 {

@@ -318,6 +318,44 @@ fn an_ellipse_stroked_through_the_stroker_is_its_exact_offset() {
 }
 
 #[test]
+fn an_ellipse_stroke_is_the_band_within_its_reach_of_the_ellipse() {
+    let (c, a, b, rot) = ((50.0, 40.0), 30.0, 10.0, 20.0_f64);
+    let e = Ellipse::new(fine_point(c.0, c.1), 30 * 1024, 10 * 1024).rotated(Degrees::new(20));
+    for (w, al) in [
+        (2.0, StrokeAlignment::Centre),
+        (6.0, StrokeAlignment::Centre),
+        (3.0, StrokeAlignment::Inside),
+        (3.0, StrokeAlignment::Outside),
+    ] {
+        let style = StrokeStyle::new((w * 1024.0_f64) as u32).with_alignment(al);
+        let mut s = Segments::new();
+        e.stroke(&style, &mut s).unwrap();
+        assert!(s.is_closed_in_range());
+        let (reach_in, reach_out) = match al {
+            StrokeAlignment::Inside => (w, 0.0),
+            StrokeAlignment::Centre => (w / 2.0, w / 2.0),
+            StrokeAlignment::Outside => (0.0, w),
+        };
+        let mut y = 20.03;
+        while y < 60.0 {
+            let mut x = 15.07;
+            while x < 85.0 {
+                let (d, inside) =
+                    softedge_tests::path_ref::ellipse_distance((x, y), c, a, b, rot.to_radians());
+                let reach = if inside { reach_in } else { reach_out };
+                if (d - reach).abs() > 0.01 && d > 0.01 {
+                    let got = s.winding(x, y);
+                    assert_eq!(got != 0, d < reach, "{al:?} w {w} at ({x}, {y}), d {d}");
+                    assert!(got >= 0);
+                }
+                x += 0.37;
+            }
+            y += 0.37;
+        }
+    }
+}
+
+#[test]
 fn dashes_follow_the_pattern_along_a_line() {
     // 100 px along y = 10.5, 2 px wide, 7 on, 3 off, starting 2 px in.
     let pattern = [7 * 1024, 3 * 1024];

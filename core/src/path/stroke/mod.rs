@@ -565,3 +565,121 @@ impl<S: SegmentSink + ?Sized> PathSink for Stroker<'_, '_, S> {
         self.end_contour(true);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::path::testing::Tally;
+
+    fn p(x: i32, y: i32) -> FinePoint {
+        FinePoint::new(x * 1024, y * 1024)
+    }
+
+    fn run(style: &StrokeStyle<'_>, f: impl FnOnce(&mut Stroker<'_, '_, Tally>)) -> Tally {
+        let mut t = Tally::default();
+        {
+            let mut s = Stroker::new(style, &mut t);
+            f(&mut s);
+            s.finish().unwrap_or(());
+        }
+        t
+    }
+
+    #[test]
+    fn zero_length_segments_and_coincident_points_change_nothing() {
+        let st = StrokeStyle::new(2048);
+        let plain = run(&st, |s| {
+            s.move_to(p(0, 0));
+            s.line_to(p(10, 0));
+            s.line_to(p(10, 10));
+        });
+        let doubled = run(&st, |s| {
+            s.move_to(p(0, 0));
+            s.line_to(p(0, 0));
+            s.line_to(p(10, 0));
+            s.line_to(p(10, 0));
+            s.quad_to(p(10, 0), p(10, 0));
+            s.line_to(p(10, 10));
+        });
+        assert_eq!(plain.area2, doubled.area2);
+        assert!(plain.closed() && doubled.closed());
+    }
+
+    #[test]
+    fn a_lone_move_and_nothing_open_draw_nothing() {
+        let st = StrokeStyle::new(2048).with_cap(LineCap::Round);
+        assert_eq!(run(&st, |s| s.move_to(p(3, 3))).count, 0);
+        assert_eq!(run(&st, |s| s.close()).count, 0);
+        let t = run(&StrokeStyle::new(0), |s| {
+            s.move_to(p(0, 0));
+            s.line_to(p(5, 5));
+        });
+        assert_eq!(t.count, 0);
+    }
+
+    #[test]
+    fn a_u_turn_ends_flat_with_bevel_and_miter_and_round_with_round() {
+        let uturn = |join| {
+            run(&StrokeStyle::new(2048).with_join(join), |s| {
+                s.move_to(p(0, 0));
+                s.line_to(p(10, 0));
+                s.line_to(p(0, 0));
+            })
+        };
+        // The two bodies coincide: 10 x 2 px, covered twice (the union is
+        // nonzero, the shoelace counts it twice).
+        assert_eq!(uturn(LineJoin::Bevel).area2, 2 * 2 * 20 * 1024 * 1024);
+        assert_eq!(uturn(LineJoin::Miter).area2, uturn(LineJoin::Bevel).area2);
+        let round = uturn(LineJoin::Round);
+        let extra = round.px2() - 40.0;
+        assert!(
+            (extra - core::f64::consts::PI / 2.0).abs() < 2e-3,
+            "{extra}"
+        );
+        assert!(round.closed());
+    }
+
+    #[test]
+    fn a_dot_is_a_disc_or_a_square_or_nothing() {
+        let dot = |cap| {
+            run(&StrokeStyle::new(2048).with_cap(cap), |s| {
+                s.move_to(p(5, 5));
+                s.close();
+            })
+        };
+        assert!((dot(LineCap::Round).px2() - core::f64::consts::PI).abs() < 2e-3);
+        assert_eq!(dot(LineCap::Square).area2, 2 * 4 * 1024 * 1024);
+        assert_eq!(dot(LineCap::Butt).count, 0);
+    }
+
+    #[test]
+    fn the_miter_limit_bevels_sharp_corners() {
+        let corner = |limit| {
+            run(&StrokeStyle::new(2048).with_miter_limit(limit), |s| {
+                s.move_to(p(0, 0));
+                s.line_to(p(10, 0));
+                s.line_to(p(0, 3)); // a sharp turn back
+            })
+        };
+        let sharp = corner(MiterLimit::from_int(100));
+        let cut = corner(MiterLimit::from_int(1));
+        assert!(sharp.area2 > cut.area2);
+        assert!(sharp.closed() && cut.closed());
+    }
+
+    #[test]
+    fn a_closed_contour_has_no_caps() {
+        let sq = |cap| {
+            run(&StrokeStyle::new(2048).with_cap(cap), |s| {
+                s.move_to(p(0, 0));
+                s.line_to(p(10, 0));
+                s.line_to(p(10, 10));
+                s.line_to(p(0, 10));
+                s.close();
+            })
+        };
+        assert_eq!(sq(LineCap::Butt).area2, sq(LineCap::Round).area2);
+        // Miter corners: 12 x 12 minus 8 x 8.
+        assert_eq!(sq(LineCap::Square).area2, 2 * (144 - 64) * 1024 * 1024);
+    }
+}
