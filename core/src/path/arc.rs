@@ -255,6 +255,57 @@ pub(crate) fn ellipse_points(
     }
 }
 
+/// Describes an elliptic arc into a path as cubic Béziers (within 1/4 fine
+/// unit of the arc before the control points are rounded to the grid):
+/// the ellipse about `centre` with semi-axes `rx` (along the rotated x
+/// axis) and `ry`, rotated by `rotation`, from the parameter angle `start`
+/// over `sweep` (clockwise on screen when positive; at most a turn). The
+/// arc begins with a `move_to` its first point when `move_first`, else
+/// with a `line_to` it (as a canvas `arc` joins the current point).
+///
+/// ```
+/// use softedge::geom::FinePoint;
+/// use softedge::path::arc::describe_arc;
+/// use softedge::path::{Degrees, Flattener, SegmentSink};
+/// # struct Count(usize);
+/// # impl SegmentSink for Count { fn segment(&mut self, _: FinePoint, _: FinePoint) { self.0 += 1 } }
+/// let mut count = Count(0);
+/// let mut f = Flattener::new(&mut count);
+/// // A half ellipse, closed by its chord.
+/// describe_arc(&mut f, FinePoint::new(0, 0), 20 * 1024, 10 * 1024, Degrees::new(0),
+///              Degrees::new(0), Degrees::new(180), true);
+/// f.finish();
+/// assert!(count.0 > 20);
+/// ```
+#[allow(clippy::too_many_arguments)]
+pub fn describe_arc<P: PathSink + ?Sized>(
+    sink: &mut P,
+    centre: crate::geom::FinePoint,
+    rx: u32,
+    ry: u32,
+    rotation: super::Degrees,
+    start: super::Degrees,
+    sweep: super::Degrees,
+    move_first: bool,
+) {
+    let frame = EllipseFrame::new(
+        centre.into(),
+        rx,
+        ry,
+        Unit::from_angle(rotation.binary() as u32),
+    );
+    let t0 = start.binary();
+    let first = frame.point(t0, Q30).to_fine();
+    if move_first {
+        sink.move_to(first);
+    } else {
+        sink.line_to(first);
+    }
+    if !frame.is_flat() {
+        arc_cubics(&frame, t0, sweep.binary(), None, sink);
+    }
+}
+
 /// Cubic pieces per quarter turn for a radius of `r` fine units.
 fn pieces_per_quarter(r: i64) -> i64 {
     // The smallest q >= 1 with 917 q^6 >= r (r <= 2^23: q <= 5).

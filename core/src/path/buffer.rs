@@ -20,6 +20,13 @@ use crate::geom::FinePoint;
 use super::SegmentSink;
 
 /// A directed segment, as kept by [`SegmentBuffer`].
+///
+/// ```
+/// use softedge::geom::FinePoint;
+/// use softedge::path::Segment;
+/// let s = Segment { from: FinePoint::new(0, 0), to: FinePoint::new(1024, 0) };
+/// assert_ne!(s.from, s.to);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Segment {

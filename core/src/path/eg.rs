@@ -58,6 +58,12 @@ fn centre(top_left: Point, size: Size) -> FinePoint {
 }
 
 /// An embedded-graphics angle as [`Degrees`].
+///
+/// ```
+/// use embedded_graphics::geometry::AngleUnit;
+/// use softedge::path::{eg::degrees, Degrees};
+/// assert!((degrees(90.0.deg()).bits() - Degrees::new(90).bits()).abs() <= 2);
+/// ```
 pub fn degrees(a: Angle) -> Degrees {
     Degrees::from_f32_radians_bits(a.to_radians().to_bits())
 }

@@ -60,6 +60,13 @@ pub enum SvgErrorKind {
 }
 
 /// An error in path data: where (a byte offset into the string) and what.
+///
+/// ```
+/// use softedge::path::svg::{SvgErrorKind, SvgPath};
+/// let e = SvgPath::new("M 0 0 L 3000 0").unwrap_err();
+/// assert_eq!((e.position, e.kind), (8, SvgErrorKind::PointOutOfRange));
+/// assert_eq!(format!("{e}"), "path data, byte 8: point beyond the coordinate range of +-2048 px");
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct SvgError {

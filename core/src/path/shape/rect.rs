@@ -83,6 +83,13 @@ impl Shape for Rectangle {
 /// The radii of the four corners, `(horizontal, vertical)` each, fine
 /// units: a corner is a quarter of the ellipse with these semi-axes. A
 /// corner with either radius zero is square.
+///
+/// ```
+/// use softedge::path::CornerRadii;
+/// let r = CornerRadii { top_left: (4096, 2048), ..CornerRadii::uniform(1024) };
+/// // 4 + 1 px along the top of a 4-px-wide rectangle: all scaled by 4/5.
+/// assert_eq!(r.clamped(4096, 8192).top_left, (3276, 1638));
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct CornerRadii {

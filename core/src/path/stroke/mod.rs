@@ -115,6 +115,20 @@ pub enum LineCap {
 }
 
 /// Where a stroke lies across its path.
+///
+/// ```
+/// use softedge::geom::FinePoint;
+/// use softedge::path::{Circle, SegmentSink, Shape, StrokeAlignment, StrokeStyle};
+/// # #[derive(Default)] struct Area2(i64);
+/// # impl SegmentSink for Area2 { fn segment(&mut self, a: FinePoint, b: FinePoint) {
+/// #     self.0 += i64::from(a.x) * i64::from(b.y) - i64::from(b.x) * i64::from(a.y); } }
+/// // A 1-px stroke inside a circle of radius 10 px: the ring from 9 to 10 px.
+/// let mut a = Area2::default();
+/// let inside = StrokeStyle::new(1024).with_alignment(StrokeAlignment::Inside);
+/// Circle::new(FinePoint::new(0, 0), 10 * 1024).stroke(&inside, &mut a).unwrap();
+/// let px2 = a.0 as f64 / 2.0 / (1024.0 * 1024.0);
+/// assert!((px2 / (core::f64::consts::PI * 19.0) - 1.0).abs() < 1e-3);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum StrokeAlignment {
@@ -184,6 +198,12 @@ impl Default for MiterLimit {
 }
 
 /// Why a stroke is incomplete.
+///
+/// ```
+/// use softedge::path::StrokeError;
+/// let e = StrokeError::TooManyDashes;
+/// assert!(format!("{e}").contains("65536"));
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum StrokeError {
