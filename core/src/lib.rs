@@ -9,7 +9,8 @@
 //! One frame flows through the stages in the order of the modules below:
 //!
 //! 1. [`geom`]: vertices in sub-pixel fixed point (1/16 px), checked against
-//!    the documented coordinate range.
+//!    the documented coordinate range; [`path`]: paths, shapes, strokes and
+//!    SVG path data as closed contours of segments on the 1/1024-px grid.
 //! 2. [`shade`]: per-primitive setup of the Gouraud plane (the only place
 //!    colour gradients are divided).
 //! 3. [`edge`]: the Bresenham evaluation-function edge walker of seed 001,
@@ -119,6 +120,7 @@ pub mod edge;
 mod errors;
 pub mod geom;
 pub mod hsr;
+pub mod path;
 pub mod pixel_model;
 pub mod postfilter;
 pub mod raster;

@@ -11,10 +11,13 @@
 //!   polygons and triangulations of a square.
 //! - [`visible`]: which triangle is visible where (seed 004), by point
 //!   sampling with exact depth comparisons: the hidden-surface reference.
+//! - [`path_ref`]: `f64` winding numbers, scanline areas, exact disc areas,
+//!   curve distances and stroke unions: the reference of the path tests.
 #![forbid(unsafe_code)]
 
 pub mod exact;
 pub mod frame;
+pub mod path_ref;
 pub mod ratio;
 pub mod shapes;
 pub mod visible;
