@@ -59,14 +59,20 @@ impl Display for DrawError {
                 p.x, p.y
             ),
             Self::BadIndex => f.write_str("a mesh triangle names a point the mesh does not have"),
+            Self::Stroke(e) => e.fmt(f),
         }
     }
 }
+
+impl Error for crate::path::StrokeError {}
+
+impl Error for crate::path::svg::SvgError {}
 
 impl Error for DrawError {
     fn source(&self) -> Option<&(dyn Error + 'static)> {
         match self {
             Self::Coord(e) => Some(e),
+            Self::Stroke(e) => Some(e),
             _ => None,
         }
     }

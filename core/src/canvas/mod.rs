@@ -19,6 +19,7 @@
 //! reason kept ([`Canvas::skipped`]): the rest of the frame is drawn.
 
 mod cache;
+mod paths;
 
 pub use cache::{WalkCache, WalkSlot};
 
@@ -238,6 +239,87 @@ impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
             op,
         )
         .inspect_err(|&e| self.skip(serial, e))
+    }
+
+    /// Fills a shape or path ([`Shape`](crate::path::Shape): circles,
+    /// ellipses, arcs, sectors, rectangles, rounded rectangles, polylines,
+    /// SVG path data, glyph outlines) by `rule` with one flat linear colour.
+    ///
+    /// ```
+    /// use softedge::canvas::Canvas;
+    /// use softedge::geom::FinePoint;
+    /// use softedge::path::Circle;
+    /// use softedge::style::{Blend, FillRule, Opacity};
+    /// use softedge::{Band, BandBuffer};
+    /// let (mut acc, mut cover) = ([0i32; 400], [0i32; 480]);
+    /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band::new(20, 0, 20)).unwrap();
+    /// buf.clear([0]);
+    /// let mut canvas = Canvas::new(&mut buf, None);
+    /// let disc = Circle::new(FinePoint::centre_of(9, 9), 6 * 1024);
+    /// canvas.fill_shape(&disc, [4095], FillRule::NonZero, Blend::Over, Opacity::OPAQUE).unwrap();
+    /// assert_eq!(canvas.buffer().lin12(10, 10), Some([4095]));
+    /// assert_eq!(canvas.buffer().lin12(0, 0), Some([0]));
+    /// ```
+    pub fn fill_shape<S: crate::path::Shape + ?Sized>(
+        &mut self,
+        shape: &S,
+        color: [u16; C],
+        rule: FillRule,
+        blend: Blend,
+        opacity: Opacity,
+    ) -> Result<(), DrawError> {
+        let serial = self.next_serial();
+        let outline = paths::Filled {
+            shape,
+            tol: crate::path::Tolerance::DEFAULT,
+            bounds: paths::shape_bounds(shape),
+        };
+        let r = self.paint_outline(serial, &outline, Coverage::Rule(rule), color, blend, opacity);
+        r.inspect_err(|&e| self.skip(serial, e))
+    }
+
+    /// Strokes a shape's or path's outline with `style` (width, joins,
+    /// caps, dashes, alignment) in one flat linear colour. The stroke is
+    /// one shape: where its pieces meet nothing is covered twice.
+    pub fn stroke_shape<S: crate::path::Shape + ?Sized>(
+        &mut self,
+        shape: &S,
+        style: &crate::path::StrokeStyle<'_>,
+        color: [u16; C],
+        blend: Blend,
+        opacity: Opacity,
+    ) -> Result<(), DrawError> {
+        let serial = self.next_serial();
+        let outline = paths::Stroked {
+            shape,
+            style,
+            tol: crate::path::Tolerance::DEFAULT,
+            bounds: paths::Stroked::<S>::widen(paths::shape_bounds(shape), style),
+            error: core::cell::Cell::new(None),
+        };
+        let nz = Coverage::Rule(FillRule::NonZero);
+        let r = self
+            .paint_outline(serial, &outline, nz, color, blend, opacity)
+            .and_then(|()| outline.error.get().map_or(Ok(()), |e| Err(DrawError::Stroke(e))));
+        r.inspect_err(|&e| self.skip(serial, e))
+    }
+
+    /// An outline in one flat colour.
+    fn paint_outline<O: Outline + ?Sized>(
+        &mut self,
+        serial: u32,
+        outline: &O,
+        coverage: Coverage,
+        color: [u16; C],
+        blend: Blend,
+        opacity: Opacity,
+    ) -> Result<(), DrawError> {
+        let color = color.map(|v| v.min(crate::LIN_MAX));
+        let op = match blend {
+            Blend::Over => ComposeOp::Over(opacity),
+            Blend::Add => ComposeOp::Add(opacity),
+        };
+        self.fill_outline(serial, 0, outline, coverage, &Paint::Flat(color), op)
     }
 
     /// Fills a triangle with a linear colour per vertex (Gouraud), or one

@@ -115,6 +115,9 @@ pub enum DrawError {
     FineCoord(FinePoint),
     /// A mesh's triangle names a point it does not have.
     BadIndex,
+    /// A stroke was not drawn completely (its dash pattern needed too many
+    /// intervals).
+    Stroke(crate::path::StrokeError),
     /// More than [`MAX_POLYGON_VERTICES`] vertices.
     TooManyVertices,
     /// Per-vertex colours given for a different number of vertices.

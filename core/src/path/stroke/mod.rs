@@ -181,6 +181,11 @@ impl MiterLimit {
         l2 * one_plus >= 2u128 << 62
     }
 
+    /// The limit in Q16.
+    pub const fn to_q16(self) -> u32 {
+        self.0
+    }
+
     /// True when a miter is drawn between two segments meeting at
     /// `degrees` (the angle between them: 180 is straight on).
     pub fn allows_angle_degrees(self, degrees: i32) -> bool {
@@ -253,6 +258,17 @@ pub struct StrokeStyle<'d> {
 }
 
 impl<'d> StrokeStyle<'d> {
+    /// How far, at most, the stroke reaches from its path, in fine units:
+    /// the whole width (one-sided alignment) times the longest a join or
+    /// cap makes it (the miter limit, or the square cap's √2 < 1.5).
+    pub fn reach(&self) -> i64 {
+        let limit = match self.join {
+            LineJoin::Miter => u64::from(self.miter_limit.to_q16()).max(3 << 15),
+            _ => 3 << 15,
+        };
+        ((u64::from(self.width) * limit) >> 16) as i64 + 2
+    }
+
     /// A solid stroke of `width` fine units, miter joins (limit 4), butt
     /// caps, centred: SVG's defaults.
     pub const fn new(width: u32) -> Self {

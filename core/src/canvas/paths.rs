@@ -1,0 +1,118 @@
+//! Paths, shapes and strokes as outlines the canvas fills: the bridge from
+//! [`path`](crate::path)'s geometry to the band.
+//!
+//! A shape is described again in every band it touches (paths are not
+//! stored: a path of any size works, at the cost of describing it per
+//! band); its bounds, for rejecting the bands it misses, come from its
+//! control points, which hold every curve (a Bézier lies in the hull of
+//! its control polygon), widened by a stroke's reach.
+
+use super::{FineRect, Outline};
+use crate::geom::{FinePoint, PathSink};
+use crate::path::{SegmentSink, Shape, StrokeError, StrokeStyle, Tolerance};
+
+/// The box around every point a description names.
+#[derive(Default)]
+struct Bounds(Option<FineRect>);
+
+impl Bounds {
+    fn add(&mut self, p: FinePoint) {
+        let r = self.0.get_or_insert(FineRect {
+            x0: p.x,
+            y0: p.y,
+            x1: p.x,
+            y1: p.y,
+        });
+        r.x0 = r.x0.min(p.x);
+        r.y0 = r.y0.min(p.y);
+        r.x1 = r.x1.max(p.x);
+        r.y1 = r.y1.max(p.y);
+    }
+}
+
+impl PathSink for Bounds {
+    fn move_to(&mut self, p: FinePoint) {
+        self.add(p);
+    }
+    fn line_to(&mut self, p: FinePoint) {
+        self.add(p);
+    }
+    fn quad_to(&mut self, c: FinePoint, p: FinePoint) {
+        self.add(c);
+        self.add(p);
+    }
+    fn cubic_to(&mut self, c1: FinePoint, c2: FinePoint, p: FinePoint) {
+        self.add(c1);
+        self.add(c2);
+        self.add(p);
+    }
+    fn close(&mut self) {}
+}
+
+/// The box around a shape's description (`None`: nothing described).
+pub(crate) fn shape_bounds<S: Shape + ?Sized>(shape: &S) -> Option<FineRect> {
+    let mut b = Bounds::default();
+    shape.describe(&mut b);
+    b.0
+}
+
+/// Segments to a closure.
+struct Segments<F>(F);
+
+impl<F: FnMut(FinePoint, FinePoint)> SegmentSink for Segments<F> {
+    fn segment(&mut self, from: FinePoint, to: FinePoint) {
+        (self.0)(from, to);
+    }
+}
+
+/// A shape's inside.
+pub(crate) struct Filled<'s, S: ?Sized> {
+    pub shape: &'s S,
+    pub tol: Tolerance,
+    pub bounds: Option<FineRect>,
+}
+
+impl<S: Shape + ?Sized> Outline for Filled<'_, S> {
+    fn bounds(&self) -> Option<FineRect> {
+        self.bounds
+    }
+    fn segments<F: FnMut(FinePoint, FinePoint)>(&self, f: F) {
+        self.shape.fill_with(self.tol, &mut Segments(f));
+    }
+}
+
+/// A shape's stroke.
+pub(crate) struct Stroked<'s, 'd, S: ?Sized> {
+    pub shape: &'s S,
+    pub style: &'s StrokeStyle<'d>,
+    pub tol: Tolerance,
+    pub bounds: Option<FineRect>,
+    /// What the stroker reported (the first time).
+    pub error: core::cell::Cell<Option<StrokeError>>,
+}
+
+impl<S: Shape + ?Sized> Stroked<'_, '_, S> {
+    /// The shape's bounds widened by the stroke's reach.
+    pub(crate) fn widen(b: Option<FineRect>, style: &StrokeStyle<'_>) -> Option<FineRect> {
+        let r = style.reach().min(i64::from(i32::MAX / 4)) as i32;
+        b.map(|b| FineRect {
+            x0: b.x0.saturating_sub(r),
+            y0: b.y0.saturating_sub(r),
+            x1: b.x1.saturating_add(r),
+            y1: b.y1.saturating_add(r),
+        })
+    }
+}
+
+impl<S: Shape + ?Sized> Outline for Stroked<'_, '_, S> {
+    fn bounds(&self) -> Option<FineRect> {
+        self.bounds
+    }
+    fn segments<F: FnMut(FinePoint, FinePoint)>(&self, f: F) {
+        if let Err(e) = self.shape.stroke_with(self.style, self.tol, &mut Segments(f)) {
+            if self.error.get().is_none() {
+                self.error.set(Some(e));
+            }
+        }
+    }
+}
