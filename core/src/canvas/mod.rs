@@ -20,6 +20,8 @@
 
 mod cache;
 mod paths;
+#[cfg(feature = "embedded-graphics")]
+mod target;
 
 pub use cache::{WalkCache, WalkSlot};
 
@@ -124,13 +126,20 @@ pub struct Skipped {
 
 /// The canvas of one band: a [`BandBuffer`] with the frame's
 /// [`WalkCache`] and the count of shapes drawn.
+///
+/// `Col` is the display's colour type (any embedded-graphics colour, taken
+/// as sRGB, or linear `[u16; C]`): the canvas is an embedded-graphics
+/// `DrawTarget` of it, and the styles of [`draw`](crate::draw) take it.
 #[derive(Debug)]
-pub struct Canvas<'c, 'b, const C: usize> {
+pub struct Canvas<'c, 'b, const C: usize, Col = [u16; C]> {
     buf: &'c mut BandBuffer<'b, C>,
     cache: Option<WalkCache<'c, C>>,
     serial: u32,
     style: RenderStyle,
     skipped: Skipped,
+    /// The whole frame, for embedded-graphics' clipping.
+    frame: (u16, u16),
+    color: core::marker::PhantomData<Col>,
 }
 
 /// Which walk an edge takes under a style.
@@ -141,18 +150,38 @@ enum WalkKind {
     Sampled,
 }
 
-impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
+impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
     /// A canvas over a cleared band buffer, with or without a cache (give
     /// every band of a frame a view of the same slots, cleared when the
-    /// frame starts).
+    /// frame starts). Its frame is the band's columns and rows from 0; see
+    /// [`with_frame`](Self::with_frame).
     pub fn new(buf: &'c mut BandBuffer<'b, C>, cache: Option<WalkCache<'c, C>>) -> Self {
+        let band = buf.band();
+        let frame = (
+            band.column_range().end.clamp(0, i32::from(u16::MAX)) as u16,
+            band.row_range().end.clamp(0, i32::from(u16::MAX)) as u16,
+        );
         Self {
             buf,
             cache,
             serial: 0,
             style: RenderStyle::default(),
             skipped: Skipped::default(),
+            frame,
+            color: core::marker::PhantomData,
         }
+    }
+
+    /// The size of the whole frame the band belongs to (what
+    /// embedded-graphics drawings are clipped to).
+    pub fn with_frame(mut self, width: u16, height: u16) -> Self {
+        self.frame = (width, height);
+        self
+    }
+
+    /// The frame's width and height.
+    pub fn frame_size(&self) -> (u16, u16) {
+        self.frame
     }
 
     /// The band drawn.
@@ -274,7 +303,14 @@ impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
             tol: crate::path::Tolerance::DEFAULT,
             bounds: paths::shape_bounds(shape),
         };
-        let r = self.paint_outline(serial, &outline, Coverage::Rule(rule), color, blend, opacity);
+        let r = self.paint_outline(
+            serial,
+            &outline,
+            Coverage::Rule(rule),
+            color,
+            blend,
+            opacity,
+        );
         r.inspect_err(|&e| self.skip(serial, e))
     }
 
@@ -300,7 +336,12 @@ impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
         let nz = Coverage::Rule(FillRule::NonZero);
         let r = self
             .paint_outline(serial, &outline, nz, color, blend, opacity)
-            .and_then(|()| outline.error.get().map_or(Ok(()), |e| Err(DrawError::Stroke(e))));
+            .and_then(|()| {
+                outline
+                    .error
+                    .get()
+                    .map_or(Ok(()), |e| Err(DrawError::Stroke(e)))
+            });
         r.inspect_err(|&e| self.skip(serial, e))
     }
 

@@ -180,7 +180,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
     where
         D: DrawTarget + OriginDimensions,
         P: Profile<C, Color = D::Color>,
-        F: FnMut(&mut Canvas<'_, '_, C>) -> Result<(), E>,
+        F: FnMut(&mut Canvas<'_, '_, C, D::Color>) -> Result<(), E>,
     {
         let size = target.size();
         if u32::from(self.width) > size.width || u32::from(self.height) > size.height {
@@ -209,7 +209,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
     where
         D: DrawTarget + OriginDimensions,
         P: Profile<C, Color = D::Color>,
-        F: FnMut(&mut Canvas<'_, '_, C>) -> Result<(), E>,
+        F: FnMut(&mut Canvas<'_, '_, C, D::Color>) -> Result<(), E>,
     {
         let frame = Rectangle::new(
             Point::zero(),
@@ -235,7 +235,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
     where
         D: DrawTarget,
         P: Profile<C, Color = D::Color>,
-        F: FnMut(&mut Canvas<'_, '_, C>) -> Result<(), E>,
+        F: FnMut(&mut Canvas<'_, '_, C, D::Color>) -> Result<(), E>,
     {
         let bg = background.map(|v| v.min(crate::LIN_MAX));
         WalkCache::new(&mut *self.slots).clear();
@@ -256,7 +256,8 @@ impl<'a, const C: usize> Renderer<'a, C> {
             .map_err(RenderError::Band)?;
             // The band is cleared to `bg` when it is sent.
             self.holds = None;
-            let mut canvas = Canvas::new(&mut buf, Some(WalkCache::new(&mut *self.slots)));
+            let mut canvas = Canvas::new(&mut buf, Some(WalkCache::new(&mut *self.slots)))
+                .with_frame(self.width, self.height);
             let r = draw(&mut canvas);
             let skipped = canvas.skipped();
             let (hits, misses) = canvas.cache_stats();
