@@ -116,6 +116,9 @@ mod arith;
 pub mod band;
 pub mod canvas;
 pub mod color;
+#[cfg(feature = "embedded-graphics")]
+#[cfg_attr(docsrs, doc(cfg(feature = "embedded-graphics")))]
+pub mod draw;
 pub mod edge;
 mod errors;
 pub mod geom;
@@ -123,6 +126,9 @@ pub mod hsr;
 pub mod path;
 pub mod pixel_model;
 pub mod postfilter;
+#[cfg(feature = "embedded-graphics")]
+#[cfg_attr(docsrs, doc(cfg(feature = "embedded-graphics")))]
+pub mod prelude;
 pub mod raster;
 #[cfg(feature = "embedded-graphics")]
 pub mod render;
@@ -131,6 +137,10 @@ pub mod shade;
 pub mod style;
 pub mod tone;
 mod units;
+
+/// The fixed-point crate whose types appear in the API (`I22F10`
+/// coordinates, `I16F16` angles and 3D math).
+pub use fixed;
 
 pub use band::{Band, BandBuffer, BandError, Bands};
 pub use geom::{CoordError, SubPoint, COORD_LIMIT_PX, SUB_BITS, SUB_ONE};

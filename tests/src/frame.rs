@@ -2,6 +2,7 @@
 
 use std::collections::BTreeMap;
 
+use softedge::canvas::{Canvas, WalkCache, WalkSlot};
 use softedge::edge::CoverSink;
 use softedge::{BandBuffer, Bands, SubPoint};
 
@@ -133,4 +134,37 @@ impl Recorder {
         }
         rows
     }
+}
+
+/// Draws a frame of `width x height` through a [`Canvas`] per band of
+/// `rows` rows over background `bg`, with a walk cache of `slots` slots
+/// (0: none); `draw` is called once per band.
+pub fn render_canvas<const C: usize>(
+    width: u16,
+    height: u16,
+    rows: u16,
+    bg: [u16; C],
+    slots: usize,
+    draw: impl FnMut(&mut Canvas<'_, '_, C>),
+) -> Frame<C> {
+    render_canvas_of::<C, [u16; C]>(width, height, rows, bg, slots, draw)
+}
+
+/// [`render_canvas`] with a canvas of colour type `Col` (an
+/// embedded-graphics colour: the canvas is then a `DrawTarget` of it).
+pub fn render_canvas_of<const C: usize, Col>(
+    width: u16,
+    height: u16,
+    rows: u16,
+    bg: [u16; C],
+    slots: usize,
+    mut draw: impl FnMut(&mut Canvas<'_, '_, C, Col>),
+) -> Frame<C> {
+    let mut cache = vec![WalkSlot::<C>::EMPTY; slots];
+    WalkCache::new(&mut cache).clear();
+    render(width, height, rows, bg, |buf| {
+        let cache = (slots > 0).then(|| WalkCache::new(&mut cache));
+        let mut canvas = Canvas::typed(buf, cache).with_frame(width, height);
+        draw(&mut canvas);
+    })
 }

@@ -19,7 +19,7 @@
 //! reason kept ([`Canvas::skipped`]): the rest of the frame is drawn.
 
 mod cache;
-mod paths;
+pub(crate) mod paths;
 #[cfg(feature = "embedded-graphics")]
 mod target;
 
@@ -150,12 +150,20 @@ enum WalkKind {
     Sampled,
 }
 
-impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
-    /// A canvas over a cleared band buffer, with or without a cache (give
-    /// every band of a frame a view of the same slots, cleared when the
-    /// frame starts). Its frame is the band's columns and rows from 0; see
-    /// [`with_frame`](Self::with_frame).
+impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
+    /// A canvas of linear colours over a cleared band buffer, with or
+    /// without a cache (give every band of a frame a view of the same
+    /// slots, cleared when the frame starts). Its frame is the band's
+    /// columns and rows from 0; see [`with_frame`](Self::with_frame).
     pub fn new(buf: &'c mut BandBuffer<'b, C>, cache: Option<WalkCache<'c, C>>) -> Self {
+        Self::typed(buf, cache)
+    }
+}
+
+impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
+    /// [`new`](Canvas::new) for a display of colour type `Col` (the
+    /// canvas is then an embedded-graphics `DrawTarget` of it).
+    pub fn typed(buf: &'c mut BandBuffer<'b, C>, cache: Option<WalkCache<'c, C>>) -> Self {
         let band = buf.band();
         let frame = (
             band.column_range().end.clamp(0, i32::from(u16::MAX)) as u16,
@@ -254,20 +262,8 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         opacity: Opacity,
     ) -> Result<(), DrawError> {
         let serial = self.next_serial();
-        let color = color.map(|v| v.min(crate::LIN_MAX));
-        let op = match blend {
-            Blend::Over => ComposeOp::Over(opacity),
-            Blend::Add => ComposeOp::Add(opacity),
-        };
-        self.fill_outline(
-            serial,
-            0,
-            outline,
-            Coverage::Rule(rule),
-            &Paint::Flat(color),
-            op,
-        )
-        .inspect_err(|&e| self.skip(serial, e))
+        self.paint_outline(serial, outline, rule, color, blend, opacity)
+            .inspect_err(|&e| self.skip(serial, e))
     }
 
     /// Fills a shape or path ([`Shape`](crate::path::Shape): circles,
@@ -303,14 +299,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             tol: crate::path::Tolerance::DEFAULT,
             bounds: paths::shape_bounds(shape),
         };
-        let r = self.paint_outline(
-            serial,
-            &outline,
-            Coverage::Rule(rule),
-            color,
-            blend,
-            opacity,
-        );
+        let r = self.paint_outline(serial, &outline, rule, color, blend, opacity);
         r.inspect_err(|&e| self.skip(serial, e))
     }
 
@@ -333,9 +322,8 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             bounds: paths::Stroked::<S>::widen(paths::shape_bounds(shape), style),
             error: core::cell::Cell::new(None),
         };
-        let nz = Coverage::Rule(FillRule::NonZero);
         let r = self
-            .paint_outline(serial, &outline, nz, color, blend, opacity)
+            .paint_outline(serial, &outline, FillRule::NonZero, color, blend, opacity)
             .and_then(|()| {
                 outline
                     .error
@@ -350,17 +338,47 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         &mut self,
         serial: u32,
         outline: &O,
-        coverage: Coverage,
+        rule: FillRule,
         color: [u16; C],
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
         let color = color.map(|v| v.min(crate::LIN_MAX));
+        let Some(coverage) = self.coverage_of(outline, rule, blend) else {
+            return Ok(());
+        };
         let op = match blend {
             Blend::Over => ComposeOp::Over(opacity),
             Blend::Add => ComposeOp::Add(opacity),
         };
         self.fill_outline(serial, 0, outline, coverage, &Paint::Flat(color), op)
+    }
+
+    /// How an outline's winding integral becomes coverage: by the fill
+    /// rule for over; for add, linearly (the integral times the outline's
+    /// orientation), so that shapes sharing an edge add up to the whole
+    /// exactly (`None`: the outline has no area, or misses the band).
+    fn coverage_of<O: Outline + ?Sized>(
+        &self,
+        outline: &O,
+        rule: FillRule,
+        blend: Blend,
+    ) -> Option<Coverage> {
+        if blend == Blend::Over {
+            return Some(Coverage::Rule(rule));
+        }
+        if !outline.bounds().is_some_and(|b| self.touches(&b)) {
+            return None;
+        }
+        let mut area2: i128 = 0;
+        outline.segments(|p, q| {
+            area2 += i128::from(i64::from(p.x) * i64::from(q.y) - i64::from(q.x) * i64::from(p.y));
+        });
+        // Positive coverage for the order `orient` gives a triangle.
+        match area2.signum() {
+            0 => None,
+            s => Some(Coverage::Signed(-s as i32)),
+        }
     }
 
     /// Fills a triangle with a linear colour per vertex (Gouraud), or one
@@ -507,15 +525,11 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         }
         let [c0, c1, c2] = colors;
         if c0 == c1 && c1 == c2 {
+            // Oriented, its coverage is linear: triangles sharing an edge
+            // add up exactly.
             let paint = Paint::Flat(c0.map(|x| x.min(crate::LIN_MAX)));
-            return self.fill_outline(
-                serial,
-                first,
-                &v,
-                Coverage::Rule(FillRule::NonZero),
-                &paint,
-                op,
-            );
+            let oriented = orient(v);
+            return self.fill_outline(serial, first, &oriented, Coverage::Signed(1), &paint, op);
         }
         let Some(plane) = self.plane(serial, first, v, colors, b) else {
             return Ok(());

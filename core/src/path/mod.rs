@@ -131,7 +131,8 @@ pub use buffer::{BandFilter, Segment, SegmentBuffer};
 pub use flattener::Flattener;
 pub use segment::SegmentSink;
 pub use shape::{
-    Arc, Circle, CornerRadii, Ellipse, Line, Polyline, Rectangle, RoundedRectangle, Sector, Shape,
+    Arc, Circle, CornerRadii, Ellipse, Line, Polygon, Polyline, Rectangle, RoundedRectangle,
+    Sector, Shape,
 };
 pub use stroke::{
     Dash, LineCap, LineJoin, MiterLimit, StrokeAlignment, StrokeError, StrokeStyle, Stroker,

@@ -25,6 +25,7 @@ use embedded_graphics_core::primitives::Rectangle;
 
 use crate::band::{BandBuffer, BandError, Bands};
 use crate::canvas::{Canvas, Skipped, WalkCache, WalkSlot};
+use crate::color::IntoLinear;
 use crate::tone::profile::{Profile, ToneRow};
 
 /// Why a frame was not rendered, or not completely.
@@ -166,19 +167,23 @@ impl<'a, const C: usize> Renderer<'a, C> {
     /// Renders one frame: per band, the background, the closure's shapes,
     /// the profile, one `fill_contiguous`.
     ///
+    /// The background is any colour the canvas converts (an
+    /// embedded-graphics colour as sRGB, or linear `[u16; C]`).
+    ///
     /// A shape the canvas rejects is skipped and reported
     /// ([`FrameReport::skipped`]); the rest of the frame is drawn. An error
     /// the closure returns is reported after the frame, which is drawn and
     /// sent whole (each band as far as the closure drew it).
-    pub fn render<D, P, E, F>(
+    pub fn render<D, P, B, E, F>(
         &mut self,
         target: &mut D,
         mut profile: P,
-        background: [u16; C],
+        background: B,
         draw: F,
     ) -> Result<FrameReport, RenderError<D::Error, E>>
     where
         D: DrawTarget + OriginDimensions,
+        B: IntoLinear<C>,
         P: Profile<C, Color = D::Color>,
         F: FnMut(&mut Canvas<'_, '_, C, D::Color>) -> Result<(), E>,
     {
@@ -190,7 +195,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
             });
         }
         let bands = Bands::new(self.width, self.height, self.band_rows);
-        self.frame(target, &mut profile, background, bands, draw)
+        self.frame(target, &mut profile, background.into_linear(), bands, draw)
     }
 
     /// Renders only the window `area` of the frame (clipped to it): what a
@@ -198,16 +203,17 @@ impl<'a, const C: usize> Renderer<'a, C> {
     /// over the window's part of the band. With a dithering profile, the
     /// window is dithered on its own (Bayer matches the full frame; error
     /// diffusion restarts at the window's edge).
-    pub fn render_window<D, P, E, F>(
+    pub fn render_window<D, P, B, E, F>(
         &mut self,
         target: &mut D,
         mut profile: P,
-        background: [u16; C],
+        background: B,
         area: Rectangle,
         draw: F,
     ) -> Result<FrameReport, RenderError<D::Error, E>>
     where
         D: DrawTarget + OriginDimensions,
+        B: IntoLinear<C>,
         P: Profile<C, Color = D::Color>,
         F: FnMut(&mut Canvas<'_, '_, C, D::Color>) -> Result<(), E>,
     {
@@ -221,7 +227,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
             return Ok(FrameReport::default());
         }
         let bands = Bands::window(area.top_left.x, area.top_left.y, w, h, self.band_rows);
-        self.frame(target, &mut profile, background, bands, draw)
+        self.frame(target, &mut profile, background.into_linear(), bands, draw)
     }
 
     fn frame<D, P, E, F>(
@@ -256,7 +262,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
             .map_err(RenderError::Band)?;
             // The band is cleared to `bg` when it is sent.
             self.holds = None;
-            let mut canvas = Canvas::new(&mut buf, Some(WalkCache::new(&mut *self.slots)))
+            let mut canvas = Canvas::typed(&mut buf, Some(WalkCache::new(&mut *self.slots)))
                 .with_frame(self.width, self.height);
             let r = draw(&mut canvas);
             let skipped = canvas.skipped();

@@ -41,7 +41,7 @@ mod sector;
 
 pub use circle::Circle;
 pub use ellipse::Ellipse;
-pub use polyline::{Line, Polyline};
+pub use polyline::{Line, Polygon, Polyline};
 pub use rect::{CornerRadii, Rectangle, RoundedRectangle};
 pub use sector::{Arc, Sector};
 

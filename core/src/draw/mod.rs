@@ -1,0 +1,260 @@
+//! Anti-aliased drawing in embedded-graphics' idiom (feature
+//! `embedded-graphics`): a primitive styled with an [`AaStyle`] and drawn
+//! into a band's [`Canvas`] with `draw`, as embedded-graphics draws a
+//! `PrimitiveStyle`d one into a `DrawTarget`.
+//!
+//! The primitive is one of embedded-graphics' own (`Circle`, `Ellipse`,
+//! `Arc`, `Sector`, `Rectangle`, `RoundedRectangle`, `Triangle`, `Line`,
+//! `Polyline`: moving a UI to softedge changes the style, not the
+//! geometry; see [`path::eg`](crate::path::eg) for the exact geometry each
+//! one stands for) or a sub-pixel shape of [`path`](crate::path) (centres
+//! and radii in 1/1024 px, SVG path data). Both get `into_styled` from
+//! embedded-graphics' `Primitive` trait.
+//!
+//! The style's colours are any colour type the canvas converts
+//! ([`IntoLinear`]: embedded-graphics' colours as sRGB, or linear
+//! `[u16; C]`). The fill is drawn first, then the stroke, each one shape in
+//! painter's order with the style's opacity and blend (as SVG draws
+//! `fill` and `stroke`).
+//!
+//! ```
+//! use embedded_graphics::pixelcolor::Rgb888;
+//! use embedded_graphics::prelude::*;
+//! use embedded_graphics::primitives::{Circle, Line};
+//! use softedge::prelude::*;
+//! # use softedge::{Band, BandBuffer};
+//! # let (mut acc, mut cover) = ([0i32; 3 * 400], [0i32; 480]);
+//! # let mut buf = BandBuffer::<3>::new(&mut acc, &mut cover, Band::new(20, 0, 20)).unwrap();
+//! # buf.clear([0; 3]);
+//! # let mut canvas: Canvas<'_, '_, 3, Rgb888> = Canvas::typed(&mut buf, None);
+//! // A disc of diameter 12 at (4, 4) and a 3-px line over it at half opacity.
+//! Circle::new(Point::new(4, 4), 12)
+//!     .into_styled(AaStyle::with_fill(Rgb888::new(0, 128, 255)))
+//!     .draw(&mut canvas)?;
+//! Line::new(Point::new(0, 10), Point::new(19, 10))
+//!     .into_styled(AaStyle::with_stroke(Rgb888::WHITE, 3).opacity(Opacity::from_ratio(1, 2)))
+//!     .draw(&mut canvas)?;
+//! # Ok::<(), softedge::DrawError>(())
+//! ```
+
+mod shapes;
+
+pub use shapes::AaShape;
+
+use embedded_graphics::primitives::{PrimitiveStyle, Styled};
+use embedded_graphics_core::pixelcolor::PixelColor;
+
+use crate::canvas::Canvas;
+use crate::color::IntoLinear;
+use crate::path::{Dash, LineCap, LineJoin, MiterLimit, StrokeAlignment, StrokeStyle};
+use crate::raster::DrawError;
+use crate::style::{Blend, FillRule, Opacity};
+
+/// How a primitive is drawn anti-aliased: fill and stroke colours, the
+/// stroke (width down to hairlines, joins, caps, dashes, alignment), the
+/// fill rule, opacity and blend.
+///
+/// Built like embedded-graphics' `PrimitiveStyle`
+/// ([`with_fill`](Self::with_fill), [`with_stroke`](Self::with_stroke),
+/// then the chained setters), or converted from one
+/// (`AaStyle::from(style)`: the same colours, width and alignment).
+///
+/// ```
+/// use embedded_graphics::pixelcolor::Rgb565;
+/// use embedded_graphics::prelude::*;
+/// use softedge::draw::AaStyle;
+/// use softedge::path::{LineCap, LineJoin};
+/// use softedge::style::Opacity;
+/// const NEEDLE: AaStyle<'static, Rgb565> = AaStyle::with_stroke(Rgb565::RED, 3)
+///     .cap(LineCap::Round)
+///     .join(LineJoin::Round)
+///     .opacity(Opacity::from_ratio(3, 4));
+/// assert_eq!(NEEDLE.stroke.width, 3 * 1024);
+/// assert!(NEEDLE.fill_color.is_none());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct AaStyle<'a, Col> {
+    /// The fill's colour, `None` for no fill.
+    pub fill_color: Option<Col>,
+    /// The stroke's colour, `None` for no stroke.
+    pub stroke_color: Option<Col>,
+    /// The stroke's geometry (width in 1/1024 px; 0 strokes nothing).
+    pub stroke: StrokeStyle<'a>,
+    /// Which points the fill covers (paths that cross themselves or have
+    /// holes).
+    pub fill_rule: FillRule,
+    /// The opacity of fill and stroke.
+    pub opacity: Opacity,
+    /// Painter's order (default) or seed 000's addition.
+    pub blend: Blend,
+}
+
+impl<Col: Copy> Default for AaStyle<'_, Col> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<'a, Col: Copy> AaStyle<'a, Col> {
+    /// Nothing drawn: no fill, no stroke (width 1 px when a colour is
+    /// given), opaque, painter's order, nonzero rule.
+    pub const fn new() -> Self {
+        Self {
+            fill_color: None,
+            stroke_color: None,
+            stroke: StrokeStyle::new(crate::geom::FINE_ONE as u32),
+            fill_rule: FillRule::NonZero,
+            opacity: Opacity::OPAQUE,
+            blend: Blend::Over,
+        }
+    }
+
+    /// A fill of `color`.
+    pub const fn with_fill(color: Col) -> Self {
+        Self::new().fill_color(color)
+    }
+
+    /// A stroke of `color`, `width` px wide, centred, miter joins (limit
+    /// 4), butt caps (SVG's defaults).
+    pub const fn with_stroke(color: Col, width: u32) -> Self {
+        Self::new().stroke_color(color).stroke_width(width)
+    }
+
+    /// The fill's colour.
+    pub const fn fill_color(mut self, color: Col) -> Self {
+        self.fill_color = Some(color);
+        self
+    }
+
+    /// The stroke's colour.
+    pub const fn stroke_color(mut self, color: Col) -> Self {
+        self.stroke_color = Some(color);
+        self
+    }
+
+    /// The stroke's width in whole pixels.
+    pub const fn stroke_width(mut self, px: u32) -> Self {
+        self.stroke.width = px.saturating_mul(crate::geom::FINE_ONE as u32);
+        self
+    }
+
+    /// The stroke's width in 1/1024 px (hairlines: 1024 is one pixel, 256
+    /// a quarter of one, drawn as a quarter of the intensity).
+    pub const fn stroke_width_fine(mut self, fine: u32) -> Self {
+        self.stroke.width = fine;
+        self
+    }
+
+    /// Which side of a closed outline the stroke lies on (open ones are
+    /// always centred).
+    pub const fn stroke_alignment(mut self, alignment: StrokeAlignment) -> Self {
+        self.stroke.alignment = alignment;
+        self
+    }
+
+    /// The joins at a path's corners.
+    pub const fn join(mut self, join: LineJoin) -> Self {
+        self.stroke.join = join;
+        self
+    }
+
+    /// The limit of miter joins.
+    pub const fn miter_limit(mut self, limit: MiterLimit) -> Self {
+        self.stroke.miter_limit = limit;
+        self
+    }
+
+    /// The caps at the ends of open paths and dashes.
+    pub const fn cap(mut self, cap: LineCap) -> Self {
+        self.stroke.cap = cap;
+        self
+    }
+
+    /// A dash pattern (SVG's `stroke-dasharray` and `-dashoffset`).
+    pub const fn dash<'e>(self, dash: Dash<'e>) -> AaStyle<'e, Col> {
+        AaStyle {
+            fill_color: self.fill_color,
+            stroke_color: self.stroke_color,
+            stroke: self.stroke.with_dash(dash),
+            fill_rule: self.fill_rule,
+            opacity: self.opacity,
+            blend: self.blend,
+        }
+    }
+
+    /// The fill rule.
+    pub const fn fill_rule(mut self, rule: FillRule) -> Self {
+        self.fill_rule = rule;
+        self
+    }
+
+    /// The opacity of fill and stroke.
+    pub const fn opacity(mut self, opacity: Opacity) -> Self {
+        self.opacity = opacity;
+        self
+    }
+
+    /// How the shape meets what is under it.
+    pub const fn blend(mut self, blend: Blend) -> Self {
+        self.blend = blend;
+        self
+    }
+}
+
+impl<Col: PixelColor> From<PrimitiveStyle<Col>> for AaStyle<'static, Col> {
+    /// The same fill and stroke colours, stroke width and alignment
+    /// (embedded-graphics' miter-or-bevel joins become miters of limit 4;
+    /// butt caps).
+    fn from(s: PrimitiveStyle<Col>) -> Self {
+        let mut style = Self::new();
+        style.fill_color = s.fill_color;
+        if s.stroke_width > 0 {
+            style.stroke_color = s.stroke_color;
+        }
+        style
+            .stroke_width(s.stroke_width)
+            .stroke_alignment(s.stroke_alignment.into())
+    }
+}
+
+/// A styled primitive that draws itself, anti-aliased, into a band's
+/// canvas (as embedded-graphics' `Drawable` draws into a `DrawTarget`).
+///
+/// A rejected shape (coordinates outside the range, a stroke too wide) is
+/// not drawn, counted in the canvas's [`skipped`](Canvas::skipped) and
+/// returned; the renderer reports it after the frame. Fill and stroke are
+/// both tried; the first error is returned.
+pub trait AaDrawable {
+    /// The style's colour type.
+    type Color;
+
+    /// Draws into `canvas`, whose band may hold only part of the shape
+    /// (the rest is drawn in the other bands).
+    fn draw<const C: usize, D>(&self, canvas: &mut Canvas<'_, '_, C, D>) -> Result<(), DrawError>
+    where
+        Self::Color: IntoLinear<C>;
+}
+
+impl<P: AaShape, Col: Copy> AaDrawable for Styled<P, AaStyle<'_, Col>> {
+    type Color = Col;
+
+    fn draw<const C: usize, D>(&self, canvas: &mut Canvas<'_, '_, C, D>) -> Result<(), DrawError>
+    where
+        Col: IntoLinear<C>,
+    {
+        let s = &self.style;
+        let shape = self.primitive.shape();
+        let fill = match s.fill_color {
+            Some(c) => canvas.fill_shape(&shape, c.into_linear(), s.fill_rule, s.blend, s.opacity),
+            None => Ok(()),
+        };
+        let stroke = match s.stroke_color {
+            Some(c) if s.stroke.width > 0 => {
+                canvas.stroke_shape(&shape, &s.stroke, c.into_linear(), s.blend, s.opacity)
+            }
+            _ => Ok(()),
+        };
+        fill.and(stroke)
+    }
+}
