@@ -22,6 +22,7 @@
 //! - [`memory`]: the band buffers' RAM (`softedge-sim memory`).
 //!
 //! ```
+//! use softedge::style::Blend;
 //! use softedge::{Line, RenderStyle, SubPoint};
 //! use softedge_sim::scene::{render, Hsr, Primitive, Scene};
 //!
@@ -38,6 +39,7 @@
 //!     ))],
 //!     hsr: Hsr::None,
 //!     section: None,
+//!     blend: Blend::Add,
 //! };
 //! let img = render(&scene).unwrap();
 //! assert_eq!(img.get(8, 3), &[2047]); // half of the 1-px line in each row
@@ -51,6 +53,7 @@ pub mod memory;
 pub mod png_out;
 pub mod scene;
 pub mod scene_file;
+pub mod shape_item;
 
 /// The repository README's code blocks, compiled and run as doc tests.
 #[cfg(doctest)]

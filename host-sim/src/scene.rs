@@ -27,7 +27,11 @@ use softedge::{
     SubPoint, Triangle,
 };
 
+use softedge::canvas::Canvas;
+use softedge::style::{Blend, Opacity};
+
 use crate::image::LinImage;
+use crate::shape_item::{self, MeshItem, ShapeItem};
 
 /// Colours of a [`Primitive::Polygon`], owned.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -59,6 +63,15 @@ pub enum Primitive<const C: usize> {
     /// given `depths`); without hidden-surface removal it is drawn as a
     /// plain triangle.
     Depth(DepthTriangle<C>),
+    /// A shape with a fill and a stroke (scene files' circles, ellipses,
+    /// arcs, sectors, rectangles, polylines, paths); hidden-surface
+    /// removal leaves it out.
+    Shape(Box<ShapeItem<C>>),
+    /// A mesh of triangles sharing points, one shape; hidden-surface
+    /// removal takes its triangles at depth 0.
+    Mesh(Box<MeshItem<C>>),
+    /// A primitive drawn at an opacity below 1 (scene files' `opacity`).
+    Faded(Box<Primitive<C>>, Opacity),
 }
 
 impl<const C: usize> Primitive<C> {
@@ -70,8 +83,8 @@ impl<const C: usize> Primitive<C> {
         }
     }
 
-    /// Draws this primitive into one band (every band gets every
-    /// primitive; core clips it to the band).
+    /// Draws this primitive into one band by seed 000's accumulation
+    /// (every band gets every primitive; core clips it to the band).
     pub fn draw(&self, buf: &mut BandBuffer<'_, C>, style: &RenderStyle) -> Result<(), DrawError> {
         match self {
             Self::Triangle(t) => t.draw(buf, style),
@@ -84,6 +97,54 @@ impl<const C: usize> Primitive<C> {
                 };
                 Polygon::new(vertices, colors).draw(buf, style)
             }
+            Self::Mesh(m) if m.opacity == Opacity::OPAQUE => {
+                for t in m.triangles() {
+                    t.draw(buf, style)?;
+                }
+                Ok(())
+            }
+            Self::Shape(_) | Self::Faded(..) | Self::Mesh(_) => {
+                let mut canvas = Canvas::new(buf, None);
+                canvas.set_style(*style);
+                self.compose(&mut canvas, Blend::Add, Opacity::OPAQUE)
+            }
+        }
+    }
+
+    /// Draws this primitive into a band's canvas with `blend`, at
+    /// `opacity` (times its own).
+    pub fn compose<Col>(
+        &self,
+        canvas: &mut Canvas<'_, '_, C, Col>,
+        blend: Blend,
+        opacity: Opacity,
+    ) -> Result<(), DrawError> {
+        match self {
+            Self::Triangle(t) => shape_item::triangle(canvas, t, blend, opacity),
+            Self::Depth(t) => shape_item::triangle(canvas, &t.triangle(), blend, opacity),
+            Self::Line(l) | Self::DepthLine(l, _) => shape_item::line(canvas, l, blend, opacity),
+            Self::Polygon { vertices, colors } => {
+                let colors = match colors {
+                    PolyColors::Flat(c) => PolygonColors::Flat(*c),
+                    PolyColors::PerVertex(cs) => PolygonColors::PerVertex(cs),
+                };
+                shape_item::polygon(canvas, &Polygon::new(vertices, colors), blend, opacity)
+            }
+            Self::Shape(s) => {
+                let s = ShapeItem {
+                    opacity: times(s.opacity, opacity),
+                    ..(**s).clone()
+                };
+                s.draw(canvas, blend)
+            }
+            Self::Mesh(m) => {
+                let m = MeshItem {
+                    opacity: times(m.opacity, opacity),
+                    ..(**m).clone()
+                };
+                m.draw(canvas, blend)
+            }
+            Self::Faded(p, a) => p.compose(canvas, blend, times(*a, opacity)),
         }
     }
 
@@ -103,9 +164,21 @@ impl<const C: usize> Primitive<C> {
             }
             Self::Line(l) => l.depth_triangles([0; 2], |t| out.push(t))?,
             Self::DepthLine(l, z) => l.depth_triangles(*z, |t| out.push(t))?,
+            Self::Mesh(m) => out.extend(
+                m.triangles()
+                    .map(|t| DepthTriangle::new(t.vertices, t.colors, [0; 3])),
+            ),
+            Self::Faded(p, _) => p.depth_triangles(out)?,
+            Self::Shape(_) => {}
         }
         Ok(())
     }
+}
+
+/// The product of two opacities.
+fn times(a: Opacity, b: Opacity) -> Opacity {
+    let p = u32::from(a.to_4096ths()) * u32::from(b.to_4096ths());
+    Opacity::from_4096ths(((p + 2048) >> 12) as u16)
 }
 
 /// Hidden-surface removal for a frame (`[render] hsr` in scene files).
@@ -153,6 +226,13 @@ pub struct Scene<const C: usize> {
     /// Section mode: draw only where surfaces cross this depth (seed 004),
     /// as anti-aliased 1 px lines in the surfaces' colours.
     pub section: Option<u16>,
+    /// How primitives meet what is drawn before them, without
+    /// hidden-surface removal: seed 000's accumulation (`Blend::Add`,
+    /// [`Scene::new`]'s default, for disjoint surfaces and meshes drawn
+    /// triangle by triangle) or painter's order (`Blend::Over`, scene
+    /// files' default). Hidden-surface methods compose their disjoint
+    /// visible pieces by addition whatever this says.
+    pub blend: Blend,
 }
 
 impl<const C: usize> Scene<C> {
@@ -168,6 +248,7 @@ impl<const C: usize> Scene<C> {
             primitives: Vec::new(),
             hsr: Hsr::None,
             section: None,
+            blend: Blend::Add,
         }
     }
 
@@ -177,6 +258,27 @@ impl<const C: usize> Scene<C> {
             style,
             ..self.clone()
         }
+    }
+
+    /// Draws the primitives into one band's canvas, in order, by
+    /// [`Scene::blend`] (without hidden-surface removal); a rejected
+    /// primitive stops the band with its index.
+    pub fn draw_into<Col>(&self, canvas: &mut Canvas<'_, '_, C, Col>) -> Result<(), RenderError> {
+        for (index, p) in self.primitives.iter().enumerate() {
+            let legacy = match p {
+                Primitive::Shape(_) | Primitive::Faded(..) => false,
+                Primitive::Mesh(m) => m.opacity == Opacity::OPAQUE,
+                _ => true,
+            };
+            let r = if self.blend == Blend::Add && legacy {
+                // Seed 000's accumulation, the frames of before bit for bit.
+                p.draw(canvas.buffer(), &self.style)
+            } else {
+                p.compose(canvas, self.blend, Opacity::OPAQUE)
+            };
+            r.map_err(|error| RenderError::Draw { index, error })?;
+        }
+        Ok(())
     }
 
     /// The same scene drawn in bands of another height.
@@ -365,10 +467,9 @@ impl<const C: usize> BandStore<C> {
         let style = &scene.style;
         match frame {
             Prepared::Plain => {
-                for (index, p) in scene.primitives.iter().enumerate() {
-                    p.draw(&mut buf, style)
-                        .map_err(|error| RenderError::Draw { index, error })?;
-                }
+                let mut canvas = Canvas::new(&mut buf, None);
+                canvas.set_style(*style);
+                scene.draw_into(&mut canvas)?;
             }
             Prepared::Section(prims) => {
                 for (p, index) in prims {

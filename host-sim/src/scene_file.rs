@@ -49,6 +49,7 @@ mod diag;
 mod display;
 mod objects;
 mod raw;
+mod shapes;
 #[cfg(feature = "window")]
 pub mod window;
 
@@ -68,7 +69,9 @@ pub use diag::{Diagnostic, Severity};
 pub use display::{pnm16, DisplayCodes, Linear};
 
 use crate::scene::{Hsr, PolyColors, Primitive, RenderError, Scene};
+use crate::shape_item::MeshItem;
 use diag::Source;
+use softedge::style::{Blend, Opacity};
 
 /// Largest frame side, pixels (the band buffer's limit).
 pub const MAX_SIDE: i64 = softedge::band::MAX_WIDTH as i64;
@@ -289,6 +292,54 @@ fn draw_error_text(error: softedge::DrawError) -> String {
         }
         other => format!("{other:?}"),
     }
+}
+
+/// The primitives of one entry at `opacity` (unchanged when opaque).
+fn faded<const C: usize>(prims: Vec<Primitive<C>>, opacity: Opacity) -> Vec<Primitive<C>> {
+    if opacity == Opacity::OPAQUE {
+        return prims;
+    }
+    prims
+        .into_iter()
+        .map(|p| Primitive::Faded(Box::new(p), opacity))
+        .collect()
+}
+
+/// An entry of several triangles (each perhaps faded alike) as one mesh
+/// of their vertices, so that painter's order composes it as one shape.
+fn as_one_mesh<const C: usize>(prims: Vec<Primitive<C>>) -> Vec<Primitive<C>> {
+    if prims.len() < 2 {
+        return prims;
+    }
+    let mut opacity = None;
+    let mut mesh = MeshItem {
+        points: Vec::new(),
+        triangles: Vec::new(),
+        colors: PolyColors::PerVertex(Vec::new()),
+        opacity: Opacity::OPAQUE,
+    };
+    for p in &prims {
+        let (t, a) = match p {
+            Primitive::Faded(q, a) => (&**q, *a),
+            q => (q, Opacity::OPAQUE),
+        };
+        let t = match t {
+            Primitive::Triangle(t) => *t,
+            Primitive::Depth(t) => t.triangle(),
+            _ => return prims,
+        };
+        if *opacity.get_or_insert(a) != a || mesh.points.len() > usize::from(u16::MAX) - 3 {
+            return prims;
+        }
+        let k = mesh.points.len() as u16;
+        mesh.points.extend(t.vertices);
+        if let PolyColors::PerVertex(cs) = &mut mesh.colors {
+            cs.extend(t.colors);
+        }
+        mesh.triangles.push([k, k + 1, k + 2]);
+    }
+    mesh.opacity = opacity.unwrap_or(Opacity::OPAQUE);
+    vec![Primitive::Mesh(Box::new(mesh))]
 }
 
 /// A depth in `0..=1` (larger is nearer) as a 16-bit depth, rounded.
@@ -556,6 +607,23 @@ impl Checker<'_> {
         Ok((style, curve, rows))
     }
 
+    /// `[render] blend` (default: over).
+    fn blend(&self, r: Option<&Spanned<raw::Render>>) -> Checked<Blend> {
+        let b = r.and_then(|r| r.get_ref().blend.as_ref());
+        let Some(b) = b else {
+            return Ok(Blend::Over);
+        };
+        match b.get_ref().as_str() {
+            "over" => Ok(Blend::Over),
+            "add" => Ok(Blend::Add),
+            other => self.err(
+                b.span(),
+                "render.blend",
+                format!("unknown blend `{other}`; one of over, add"),
+            ),
+        }
+    }
+
     /// `[render] hsr` and `section` (defaults: none, off).
     fn hsr(&self, r: Option<&Spanned<raw::Render>>) -> Checked<(Hsr, Option<u16>)> {
         let Some(r) = r.map(Spanned::get_ref) else {
@@ -652,12 +720,13 @@ impl Checker<'_> {
                     Primitive::Depth(DepthTriangle::new([a, b, c], colors, [z[0], z[1], z[2]]))
                 }
             };
+            let op = self.opacity(tr.opacity.as_ref(), &format!("{field}.opacity"))?;
             items.push((
                 Origin {
                     field,
                     span: t.span(),
                 },
-                vec![p],
+                faded(vec![p], op),
             ));
         }
         for (k, p) in file.polygon.iter().enumerate() {
@@ -699,12 +768,13 @@ impl Checker<'_> {
                     tris
                 }
             };
+            let op = self.opacity(pr.opacity.as_ref(), &format!("{field}.opacity"))?;
             items.push((
                 Origin {
                     field,
                     span: p.span(),
                 },
-                prims,
+                faded(prims, op),
             ));
         }
         for (k, l) in file.line.iter().enumerate() {
@@ -730,12 +800,13 @@ impl Checker<'_> {
                     Primitive::DepthLine(line, [z[0], z[1]])
                 }
             };
+            let op = self.opacity(lr.opacity.as_ref(), &format!("{field}.opacity"))?;
             items.push((
                 Origin {
                     field,
                     span: l.span(),
                 },
-                vec![p],
+                faded(vec![p], op),
             ));
         }
         // Section mode cuts through back faces too; everything else culls them.
@@ -749,13 +820,39 @@ impl Checker<'_> {
             softedge::scene3d::Faces::Front
         };
         items.extend(objects::objects::<C>(self, file, width, height, faces)?);
+        items.extend(shapes::shapes::<C>(self, file)?);
         // File order across tables (a stable sort keeps ties as read).
         items.sort_by_key(|(o, _)| o.span.start);
+        let blend = self.blend(file.render.as_ref())?;
+        let (hsr, section) = self.hsr(file.render.as_ref())?;
+        // In painter's order an entry made of several triangles (a 3D
+        // object, a polygon with depths) is one shape: its triangles become
+        // one mesh, its opacity the mesh's.
+        let one_shape = blend == Blend::Over && hsr == Hsr::None && section.is_none();
         let mut scene = Scene::new(width, height, background);
         scene.band_rows = band_rows;
         scene.style = style;
+        scene.blend = blend;
         let mut origins = Vec::new();
         for (origin, prims) in items {
+            let mut prims = prims;
+            if let Some(k) = origin
+                .field
+                .strip_prefix("object[")
+                .and_then(|r| r.strip_suffix(']'))
+            {
+                let o = k.parse::<usize>().ok().and_then(|k| file.object.get(k));
+                if let Some(o) = o {
+                    let op = self.opacity(
+                        o.get_ref().opacity.as_ref(),
+                        &format!("{}.opacity", origin.field),
+                    )?;
+                    prims = faded(prims, op);
+                }
+            }
+            if one_shape {
+                prims = as_one_mesh(prims);
+            }
             for p in prims {
                 scene.primitives.push(p);
                 origins.push(origin.clone());

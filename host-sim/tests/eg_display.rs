@@ -138,10 +138,8 @@ where
     Renderer::<C>::new(&mut acc, &mut cover, &mut slots, w, h, band_rows)
         .unwrap()
         .render(&mut target, format, scene.background, |canvas| {
-            scene
-                .primitives
-                .iter()
-                .try_for_each(|p| p.draw(canvas.buffer(), &scene.style))
+            canvas.set_style(scene.style);
+            scene.draw_into(canvas)
         })
         .unwrap();
     (target.inner, target.bands)

@@ -71,7 +71,7 @@ fn to_toml(scene: &Scene) -> String {
     let _ = writeln!(t, "background = {}", color(scene, scene.background));
     let _ = writeln!(
         t,
-        "[render]\nantialias = {}\npixel_model = \"{model}\"\ngamma = 2.2\nband_rows = {}",
+        "[render]\nantialias = {}\npixel_model = \"{model}\"\ngamma = 2.2\nband_rows = {}\nblend = \"add\"",
         scene.style.antialias, scene.band_rows
     );
     if scene.zbuffer {

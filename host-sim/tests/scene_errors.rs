@@ -77,9 +77,9 @@ fn unknown_key_is_named() {
 #[test]
 fn unknown_table_is_named() {
     expect(
-        &format!("{HEAD}[[circle]]\nradius = 3\n"),
+        &format!("{HEAD}[[star]]\nradius = 3\n"),
         5,
-        "circle",
+        "star",
         "unknown field",
     );
 }

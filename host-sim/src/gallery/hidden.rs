@@ -9,6 +9,7 @@
 
 use std::path::Path;
 
+use softedge::style::Blend;
 use softedge::RenderStyle;
 
 use super::{compose, GalleryError, Panel};
@@ -41,6 +42,7 @@ pub(super) fn variants(band_rows: u16) -> Result<Vec<(&'static str, Scene<3>)>, 
     let z = scene("hidden_surfaces.toml", SCENE)?.with_band_rows(band_rows);
     let none = Scene {
         hsr: Hsr::None,
+        blend: Blend::Add,
         ..z.clone()
     };
     let aliased = z.with_style(RenderStyle::ALIASED);

@@ -33,6 +33,22 @@ pub struct File {
     pub light: Option<Spanned<Light>>,
     #[serde(default)]
     pub object: Vec<Spanned<Object>>,
+    #[serde(default)]
+    pub circle: Vec<Spanned<Circle>>,
+    #[serde(default)]
+    pub ellipse: Vec<Spanned<Ellipse>>,
+    #[serde(default)]
+    pub arc: Vec<Spanned<Arc>>,
+    #[serde(default)]
+    pub sector: Vec<Spanned<Arc>>,
+    #[serde(default)]
+    pub rect: Vec<Spanned<Rect>>,
+    #[serde(default)]
+    pub polyline: Vec<Spanned<Polyline>>,
+    #[serde(default)]
+    pub path: Vec<Spanned<Path>>,
+    #[serde(default)]
+    pub mesh: Vec<Spanned<Mesh>>,
 }
 
 /// `[display]`.
@@ -128,6 +144,7 @@ pub struct Render {
     pub lightness_filter: Option<Spanned<bool>>,
     pub hsr: Option<Spanned<String>>,
     pub section: Option<Num>,
+    pub blend: Option<Spanned<String>>,
 }
 
 /// `[[triangle]]`.
@@ -138,6 +155,7 @@ pub struct Triangle {
     pub colors: Option<Colors>,
     pub color: Option<Color>,
     pub depths: Option<Nums>,
+    pub opacity: Option<Num>,
 }
 
 /// `[[polygon]]`.
@@ -148,6 +166,7 @@ pub struct Polygon {
     pub colors: Option<Colors>,
     pub color: Option<Color>,
     pub depths: Option<Nums>,
+    pub opacity: Option<Num>,
 }
 
 /// `[[line]]`.
@@ -159,6 +178,7 @@ pub struct Line {
     pub colors: Option<Colors>,
     pub color: Option<Color>,
     pub depths: Option<Nums>,
+    pub opacity: Option<Num>,
 }
 
 /// `[camera]`.
@@ -198,4 +218,171 @@ pub struct Object {
     pub position: Option<Nums>,
     pub rotation: Option<Nums>,
     pub color: Color,
+    pub opacity: Option<Num>,
+}
+
+/// `radius = 4` or `radius = [tl, tr, br, bl]` of a `[[rect]]`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RadiusValue {
+    /// One radius for every corner.
+    One(f64),
+    /// Four, clockwise from the top left.
+    Four(Vec<Num>),
+}
+
+/// A radius with its place in the file.
+pub type Radius = Spanned<RadiusValue>;
+
+impl<'de> Deserialize<'de> for RadiusValue {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> serde::de::Visitor<'de> for V {
+            type Value = RadiusValue;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("a corner radius in px, or four of them")
+            }
+            fn visit_f64<E>(self, v: f64) -> Result<RadiusValue, E> {
+                Ok(RadiusValue::One(v))
+            }
+            fn visit_i64<E>(self, v: i64) -> Result<RadiusValue, E> {
+                Ok(RadiusValue::One(v as f64))
+            }
+            fn visit_u64<E>(self, v: u64) -> Result<RadiusValue, E> {
+                Ok(RadiusValue::One(v as f64))
+            }
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> Result<RadiusValue, A::Error> {
+                let mut values = Vec::new();
+                while let Some(v) = seq.next_element::<Num>()? {
+                    values.push(v);
+                }
+                Ok(RadiusValue::Four(values))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+/// The paint and stroke keys every shape takes, borrowed from its table.
+#[derive(Debug, Clone, Copy)]
+pub struct Paint<'a> {
+    pub color: Option<&'a Color>,
+    pub fill_rule: Option<&'a Spanned<String>>,
+    pub stroke_color: Option<&'a Color>,
+    pub stroke_width: Option<&'a Num>,
+    pub join: Option<&'a Spanned<String>>,
+    pub miter_limit: Option<&'a Num>,
+    pub cap: Option<&'a Spanned<String>>,
+    pub dash: Option<&'a Nums>,
+    pub dash_offset: Option<&'a Num>,
+    pub stroke_alignment: Option<&'a Spanned<String>>,
+    pub opacity: Option<&'a Num>,
+}
+
+/// A shape's table: its own keys, then the paint and stroke keys.
+macro_rules! shape_table {
+    ($(#[$doc:meta])* $name:ident { $($(#[$a:meta])* $field:ident: $ty:ty,)* }) => {
+        $(#[$doc])*
+        #[derive(Debug, Deserialize)]
+        #[serde(deny_unknown_fields)]
+        pub struct $name {
+            $($(#[$a])* pub $field: $ty,)*
+            pub color: Option<Color>,
+            pub fill_rule: Option<Spanned<String>>,
+            pub stroke_color: Option<Color>,
+            pub stroke_width: Option<Num>,
+            pub join: Option<Spanned<String>>,
+            pub miter_limit: Option<Num>,
+            pub cap: Option<Spanned<String>>,
+            pub dash: Option<Nums>,
+            pub dash_offset: Option<Num>,
+            pub stroke_alignment: Option<Spanned<String>>,
+            pub opacity: Option<Num>,
+        }
+
+        impl $name {
+            /// The paint and stroke keys.
+            pub fn paint(&self) -> Paint<'_> {
+                Paint {
+                    color: self.color.as_ref(),
+                    fill_rule: self.fill_rule.as_ref(),
+                    stroke_color: self.stroke_color.as_ref(),
+                    stroke_width: self.stroke_width.as_ref(),
+                    join: self.join.as_ref(),
+                    miter_limit: self.miter_limit.as_ref(),
+                    cap: self.cap.as_ref(),
+                    dash: self.dash.as_ref(),
+                    dash_offset: self.dash_offset.as_ref(),
+                    stroke_alignment: self.stroke_alignment.as_ref(),
+                    opacity: self.opacity.as_ref(),
+                }
+            }
+        }
+    };
+}
+
+shape_table! {
+    /// `[[circle]]`.
+    Circle {
+        #[serde(alias = "center")]
+        centre: Nums,
+        radius: Num,
+    }
+}
+
+shape_table! {
+    /// `[[ellipse]]`.
+    Ellipse {
+        #[serde(alias = "center")]
+        centre: Nums,
+        radii: Nums,
+        rotation: Option<Num>,
+    }
+}
+
+shape_table! {
+    /// `[[arc]]` and `[[sector]]`.
+    Arc {
+        #[serde(alias = "center")]
+        centre: Nums,
+        radius: Num,
+        start: Num,
+        sweep: Num,
+    }
+}
+
+shape_table! {
+    /// `[[rect]]`.
+    Rect {
+        position: Nums,
+        size: Nums,
+        radius: Option<Radius>,
+    }
+}
+
+shape_table! {
+    /// `[[polyline]]`.
+    Polyline {
+        points: Spanned<Vec<Nums>>,
+    }
+}
+
+shape_table! {
+    /// `[[path]]`.
+    Path {
+        d: Spanned<String>,
+    }
+}
+
+/// `[[mesh]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Mesh {
+    pub points: Spanned<Vec<Nums>>,
+    pub triangles: Spanned<Vec<Spanned<Vec<Int>>>>,
+    pub colors: Option<Colors>,
+    pub color: Option<Color>,
+    pub opacity: Option<Num>,
 }
