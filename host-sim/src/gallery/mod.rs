@@ -32,6 +32,7 @@ use crate::image::{Channels, Image8, LinImage};
 use crate::png_out::write_png;
 use crate::scene::{render, PolyColors, Primitive, RenderError, Scene};
 
+mod compose2d;
 mod display;
 mod flicker;
 mod gamma;
@@ -135,7 +136,7 @@ impl std::error::Error for GalleryError {
 }
 
 /// Number of files [`write_gallery`] writes.
-pub const GALLERY_FILES: usize = 12;
+pub const GALLERY_FILES: usize = 15;
 
 /// Renders the gallery into `dir` (created if missing). `log` receives one
 /// progress line per image and one `wrote PATH (WxH)` line per file.
@@ -360,6 +361,31 @@ pub fn write_gallery(
         &sheet,
         log,
     )?;
+
+    // (j) Drawing a user interface.
+    log(&format!(
+        "[15/{n}] compositing: add | over | opacity | a mesh as one shape vs its triangles"
+    ));
+    let sheet = compose2d::compositing_sheet(opts.band_rows, scale, log)?;
+    save(
+        "15-compositing_add-vs-over-opacity-mesh-as-one-shape.png",
+        &sheet,
+        log,
+    )?;
+    log(&format!(
+        "[16/{n}] shapes and strokes: shapes | joins, caps, dashes | fill rules | e-g vs softedge"
+    ));
+    let sheet = compose2d::shapes_sheet(opts.band_rows, scale)?;
+    save(
+        "16-shapes-strokes_fill-rules_eg-aliased-vs-aa.png",
+        &sheet,
+        log,
+    )?;
+    log(&format!(
+        "[17/{n}] instrument panel: 240x240 Rgb565 | 128x64 1-bit"
+    ));
+    let sheet = compose2d::panel_sheet(scale)?;
+    save("17-instrument-panel_rgb565-vs-oled.png", &sheet, log)?;
 
     Ok(written)
 }
@@ -973,6 +999,9 @@ mod tests {
             "09-objects-3d",
             "10-lightness-filter",
             "11-pixel-models",
+            "15-compositing",
+            "16-shapes-strokes",
+            "17-instrument-panel",
         ] {
             assert!(names.iter().any(|n| n.starts_with(prefix)), "{prefix}");
         }
