@@ -6,66 +6,96 @@
 //! compare, shift and table look-up only; products appear once per
 //! primitive, per edge or per span, as stated where they occur).
 //!
+//! ```
+//! use embedded_graphics::mock_display::MockDisplay;
+//! use embedded_graphics::pixelcolor::Rgb565;
+//! use embedded_graphics::prelude::*;
+//! use embedded_graphics::primitives::{Circle, Line, Rectangle, RoundedRectangle};
+//! use softedge::prelude::*;
+//!
+//! let mut display = MockDisplay::<Rgb565>::new(); // any DrawTarget: mipidsi, ssd1306, ...
+//! let (mut acc, mut cover) = ([0; BandBuffer::<3>::acc_len(64, 8)], [0; BandBuffer::<3>::cover_len(64, 8)]);
+//! let mut slots = [WalkSlot::EMPTY; 8];
+//! let mut renderer = Renderer::new(&mut acc, &mut cover, &mut slots, 64, 64, 8)?;
+//! let button = RoundedRectangle::with_equal_corners(Rectangle::new(Point::new(8, 36), Size::new(48, 20)), Size::new(6, 6));
+//! renderer.render(&mut display, &Rgb565Format::new(Curve::Srgb), Rgb565::BLACK, |canvas| {
+//!     Circle::new(Point::new(4, 4), 40).into_styled(AaStyle::with_fill(Rgb565::BLUE)).draw(canvas)?;
+//!     button.into_styled(AaStyle::with_fill(Rgb565::RED).opacity(Opacity::from_ratio(1, 2))).draw(canvas)?;
+//!     Line::new(Point::new(2, 61), Point::new(61, 2))
+//!         .into_styled(AaStyle::with_stroke(Rgb565::WHITE, 3).cap(LineCap::Round))
+//!         .draw(canvas)
+//! })?;
+//! # assert_eq!(display.get_pixel(Point::new(24, 24)), Some(Rgb565::BLUE));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! ```
+//! use embedded_graphics::mock_display::MockDisplay;
+//! use embedded_graphics::pixelcolor::Rgb565;
+//! use embedded_graphics::prelude::*;
+//! use embedded_graphics::primitives::{Circle, Line, Rectangle, RoundedRectangle};
+//! use softedge::prelude::*;
+//!
+//! let mut display = MockDisplay::<Rgb565>::new(); // any DrawTarget: mipidsi, ssd1306, ...
+//! let mut acc = [0; BandBuffer::<3>::acc_len(64, 8)];
+//! let mut cover = [0; BandBuffer::<3>::cover_len(64, 8)];
+//! let mut slots = [WalkSlot::EMPTY; 8];
+//! let mut renderer = Renderer::new(&mut acc, &mut cover, &mut slots, 64, 64, 8)?;
+//! let button = Rectangle::new(Point::new(8, 36), Size::new(48, 20));
+//! renderer.render(&mut display, &Rgb565Format::new(Curve::Srgb), Rgb565::BLACK, |canvas| {
+//!     Circle::new(Point::new(4, 4), 40).into_styled(AaStyle::with_fill(Rgb565::BLUE)).draw(canvas)?;
+//!     RoundedRectangle::with_equal_corners(button, Size::new(6, 6))
+//!         .into_styled(AaStyle::with_fill(Rgb565::RED).opacity(Opacity::from_ratio(1, 2)))
+//!         .draw(canvas)?;
+//!     Line::new(Point::new(2, 61), Point::new(61, 2))
+//!         .into_styled(AaStyle::with_stroke(Rgb565::WHITE, 3).cap(LineCap::Round))
+//!         .draw(canvas)
+//! })?;
+//! # assert_eq!(display.get_pixel(Point::new(20, 14)), Some(Rgb565::BLUE));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
 //! One frame flows through the stages in the order of the modules below:
 //!
-//! 1. [`geom`]: vertices in sub-pixel fixed point (1/16 px), checked against
-//!    the documented coordinate range; [`path`]: paths, shapes, strokes and
-//!    SVG path data as closed contours of segments on the 1/1024-px grid.
-//! 2. [`shade`]: per-primitive setup of the Gouraud plane (the only place
-//!    colour gradients are divided).
-//! 3. [`edge`]: the Bresenham evaluation-function edge walker of seed 001,
-//!    computing each edge pixel's address, covered area and `I * S` with
-//!    additions.
-//! 4. [`band`]: the caller-provided accumulation buffer of one band of rows,
-//!    `I_acc += I * S` (seed 000, eq. 3), the span sweep that fills interior
-//!    pixels, and the one rounding of the frame, at resolve.
-//! 5. [`raster`]: the primitives users draw (triangles, polygons, lines),
-//!    with the pixel models of [`pixel_model`] (bed-of-nails, hexagonal,
-//!    circular filters; seeds 000 and 003).
-//! 6. [`hsr`]: hidden surfaces (seed 004) for primitives with depths and
-//!    the 3D objects of [`scene3d`]: the z-buffer in bands, section mode,
-//!    Warnock's subdivision, Weiler–Atherton clipping.
-//! 7. [`postfilter`]: seed 002's lightness-adaptive smoothing (optional).
-//! 8. [`tone`]: γ tables and logarithmic intensity codes (seed 000).
-//! 9. `eg` (feature `embedded-graphics`, on by default): flushing each
-//!    finished band to any embedded-graphics `DrawTarget`.
+//! 1. Geometry and paths: [`geom`] (points on the 1/1024-px grid,
+//!    [`FinePoint`](geom::FinePoint), and the 1/16-px
+//!    [`SubPoint`] of the seed primitives, checked against
+//!    the coordinate range of ±2048 px); [`path`] (shapes, paths, strokes,
+//!    dashes and SVG path data as closed contours of segments).
+//! 2. Shading: [`shade`], the Gouraud plane of a primitive (the only place
+//!    colour gradients are divided); [`style`]: fill rule, blend, opacity.
+//! 3. Edges and coverage: `edge` (the Bresenham evaluation-function edge
+//!    walker of seed 001: each edge pixel's address and covered area by
+//!    additions), [`pixel_model`] (bed-of-nails, hexagonal and circular
+//!    filters, seeds 000 and 003).
+//! 4. Compose: [`band`], the caller-provided buffers of one band of rows,
+//!    the span sweep that composes a shape's coverage into them (over;
+//!    add, `I_acc += I * S` of seed 000, eq. 3; depth, for [`hsr`]), and the
+//!    one rounding of the frame. [`raster`] (seed 000's triangles, polygons
+//!    and lines), [`hsr`] (hidden surfaces of seed 004, for the objects of
+//!    [`scene3d`]) and [`postfilter`] (seed 002's lightness filter) work
+//!    here.
+//! 5. Tone: [`tone`], γ tables and logarithmic codes of seed 000, pixel
+//!    formats, Bayer and Floyd–Steinberg dithering in linear light, display
+//!    profiles.
+//! 6. Flush: [`render`] (feature `embedded-graphics`), the frame loop into
+//!    any embedded-graphics `DrawTarget`, whole frames or a dirty window.
 //!
+//! Users draw through [`canvas`] (a band's canvas: any shape, mesh or
+//! outline, in painter's order; also an embedded-graphics `DrawTarget`) and
+//! [`draw`] (embedded-graphics' primitives styled with an
+//! [`AaStyle`](draw::AaStyle)); [`prelude`] has what a frame needs.
 //! Colours come in through [`color`]: sRGB colours (embedded-graphics
 //! colour types, 8-bit triples, `#rrggbb`) decoded to the linear 12-bit
 //! intensity every stage works in, or their luminance on one channel.
 //! Every error type prints (`Display`, `core::error::Error`) and, with the
 //! `defmt` feature, logs (`defmt::Format`).
 //!
-//! ```
-//! use softedge::{BandBuffer, Bands, RenderStyle, SubPoint, Triangle};
-//!
-//! const W: usize = 32;
-//! const H: usize = 16;
-//! const ROWS: usize = 8;
-//! let mut acc = [0i32; BandBuffer::<1>::acc_len(W as u16, ROWS as u16)];
-//! let mut cover = [0i32; BandBuffer::<1>::cover_len(W as u16, ROWS as u16)];
-//! let tri = Triangle::new(
-//!     [SubPoint::from_px(2, 1), SubPoint::new(29 * 16 + 5, 7 * 16), SubPoint::from_px(8, 15)],
-//!     [[4095], [2048], [0]],
-//! );
-//! let mut total = 0u32;
-//! for band in Bands::new(W as u16, H as u16, ROWS as u16) {
-//!     let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
-//!     buf.clear([0]);
-//!     tri.draw(&mut buf, &RenderStyle::default()).unwrap();
-//!     for y in band.y0..band.y0 + band.rows as i32 {
-//!         for x in 0..W as i32 {
-//!             total += u32::from(buf.lin12(x, y).unwrap()[0]);
-//!         }
-//!     }
-//! }
-//! assert!(total > 0);
-//! ```
-//!
 //! ## Features
 //!
-//! - `embedded-graphics` (default): the `eg` glue, the embedded-graphics
-//!   colour types of [`tone::format`] and [`dither`](tone::dither), and
+//! - `embedded-graphics` (default): [`render`], [`draw`], [`prelude`], the
+//!   canvas as a `DrawTarget`, the embedded-graphics colour types of
+//!   [`tone::format`] and [`dither`](tone::dither), and
 //!   [`IntoLinear`](color::IntoLinear) for embedded-graphics' colour types.
 //! - `defmt`: `defmt::Format` (defmt 1) for the public types, errors
 //!   included, so firmware can log them.
@@ -119,7 +149,12 @@ pub mod color;
 #[cfg(feature = "embedded-graphics")]
 #[cfg_attr(docsrs, doc(cfg(feature = "embedded-graphics")))]
 pub mod draw;
+/// The edge walker of seed 001 (feature `internals`: softedge's own tests;
+/// no stability promised).
+#[cfg(feature = "internals")]
 pub mod edge;
+#[cfg(not(feature = "internals"))]
+mod edge;
 mod errors;
 pub mod geom;
 pub mod hsr;

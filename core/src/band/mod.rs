@@ -3,7 +3,7 @@
 //! each shape into it (add, over, depth).
 //!
 //! Takes the cells and cover changes of a shape's edges from the
-//! [`edge`](crate::edge) walker, and the shape's paint (a flat colour or a
+//! the `edge` module walker, and the shape's paint (a flat colour or a
 //! Gouraud plane) and blend; gives linear 12-bit intensities per pixel at
 //! [`BandBuffer::lin12`] / [`BandBuffer::resolve_row`].
 //!

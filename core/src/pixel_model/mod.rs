@@ -3,7 +3,7 @@
 //! Takes the edges of one primitive and the band; gives each pixel its
 //! coverage under the model, as cover changes in the band's scratch that the
 //! span sweep turns into `I * coverage`. The box model (exact area, and the
-//! seed-001 single formula) lives in [`edge`](crate::edge), where the
+//! seed-001 single formula) lives in the `edge` module, where the
 //! combined evaluator of seed 001 computes `I * S` by additions; the models
 //! here weigh point samples instead.
 //!
@@ -24,7 +24,7 @@
 //! A small object moving across the grid keeps its total weight exactly.
 //!
 //! Samples are taken with the aliased walk
-//! ([`AliasedWalk`](crate::edge::AliasedWalk)) on a grid
+//! (`AliasedWalk`) on a grid
 //! `n` times finer than the pixels, whose pixel centres are exactly the
 //! sample points; its top-left rule gives every sample on a shared edge to
 //! exactly one primitive, so meshes stay seamless to the last bit. A sample

@@ -3,7 +3,7 @@
 //! Takes vertices in sub-pixel units with linear 12-bit colours (one per
 //! vertex, or one for the whole primitive), checks them (range, simplicity),
 //! sets up the Gouraud plane ([`shade`](crate::shade)), walks every edge
-//! ([`edge`](crate::edge)) and sweeps the spans ([`band`](crate::band)).
+//! (the `edge` module) and sweeps the spans ([`band`](crate::band)).
 //! Gives nothing back but a `Result`: the values land in the band buffer.
 //!
 //! ## Results for degenerate input (documented, never a panic)
@@ -46,11 +46,11 @@ pub const MAX_POLYGON_VERTICES: usize = 64;
 #[non_exhaustive]
 pub enum PixelModel {
     /// Square pixel, exact area (within 3/4096 px per edge; see
-    /// [`AreaMode::Exact`]).
+    /// `AreaMode::Exact`).
     #[default]
     Box,
     /// Square pixel, the single formula of seed 001 (error up to `k/8` of a
-    /// pixel for an edge of slope `k <= 1`; see [`AreaMode`]).
+    /// pixel for an edge of slope `k <= 1`; see `AreaMode`).
     BoxSeed,
     /// The 4x4 bed-of-nails filter of seed 000 (2x2 samples per pixel, tent
     /// weights on a 2x2-pixel base; [`pixel_model`](crate::pixel_model)).
