@@ -30,6 +30,10 @@
 //! 9. `eg` (feature `embedded-graphics`, on by default): flushing each
 //!    finished band to any embedded-graphics `DrawTarget`.
 //!
+//! Text (feature `text`, on by default): [`text`] lays out strings in
+//! TrueType / OpenType fonts (`ttf-parser`) and hands their glyph outlines
+//! to the canvas as paths.
+//!
 //! Colours come in through [`color`]: sRGB colours (embedded-graphics
 //! colour types, 8-bit triples, `#rrggbb`) decoded to the linear 12-bit
 //! intensity every stage works in, or their luminance on one channel.
@@ -67,6 +71,8 @@
 //! - `embedded-graphics` (default): the `eg` glue, the embedded-graphics
 //!   colour types of [`tone::format`] and [`dither`](tone::dither), and
 //!   [`IntoLinear`](color::IntoLinear) for embedded-graphics' colour types.
+//! - `text` (default): [`text`], outline fonts through `ttf-parser`
+//!   (`no_std`, no heap), and the bundled Softedge Sans Subset font.
 //! - `defmt`: `defmt::Format` (defmt 1) for the public types, errors
 //!   included, so firmware can log them.
 //!
@@ -129,6 +135,9 @@ pub mod render;
 pub mod scene3d;
 pub mod shade;
 pub mod style;
+#[cfg(feature = "text")]
+#[cfg_attr(docsrs, doc(cfg(feature = "text")))]
+pub mod text;
 pub mod tone;
 mod units;
 
