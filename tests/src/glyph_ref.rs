@@ -26,7 +26,10 @@ struct Collect<'a> {
 
 impl Collect<'_> {
     fn pt(&self, x: f32, y: f32) -> (f64, f64) {
-        (self.ox + f64::from(x) * self.k, self.oy - f64::from(y) * self.k)
+        (
+            self.ox + f64::from(x) * self.k,
+            self.oy - f64::from(y) * self.k,
+        )
     }
     fn flush(&mut self) {
         if self.cur.len() >= 3 {

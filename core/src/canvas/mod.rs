@@ -274,7 +274,14 @@ impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
             tol: crate::path::Tolerance::DEFAULT,
             bounds: paths::shape_bounds(shape),
         };
-        let r = self.paint_outline(serial, &outline, Coverage::Rule(rule), color, blend, opacity);
+        let r = self.paint_outline(
+            serial,
+            &outline,
+            Coverage::Rule(rule),
+            color,
+            blend,
+            opacity,
+        );
         r.inspect_err(|&e| self.skip(serial, e))
     }
 
@@ -300,7 +307,12 @@ impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
         let nz = Coverage::Rule(FillRule::NonZero);
         let r = self
             .paint_outline(serial, &outline, nz, color, blend, opacity)
-            .and_then(|()| outline.error.get().map_or(Ok(()), |e| Err(DrawError::Stroke(e))));
+            .and_then(|()| {
+                outline
+                    .error
+                    .get()
+                    .map_or(Ok(()), |e| Err(DrawError::Stroke(e)))
+            });
         r.inspect_err(|&e| self.skip(serial, e))
     }
 

@@ -76,7 +76,9 @@ impl LineHeight {
         const LIMIT: i64 = 1 << 34;
         match self {
             LineHeight::Pixels(p) => i64::from(p) * i64::from(crate::geom::FINE_ONE),
-            LineHeight::Percent(p) => (font_line_fine.clamp(-LIMIT, LIMIT) * i64::from(p) + 50) / 100,
+            LineHeight::Percent(p) => {
+                (font_line_fine.clamp(-LIMIT, LIMIT) * i64::from(p) + 50) / 100
+            }
         }
         .clamp(-LIMIT, LIMIT)
     }

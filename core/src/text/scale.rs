@@ -150,7 +150,16 @@ mod tests {
         for upem in [16u16, 1000, 1024, 2048, 16384] {
             for px in [1u16, 8, 12, 24, 48, 2048] {
                 let s = Scale::new(TextSize::px(px), upem);
-                for u in [-U64THS_LIMIT, -64 * 2048, -1, 0, 1, 333, 64 * 2048, U64THS_LIMIT] {
+                for u in [
+                    -U64THS_LIMIT,
+                    -64 * 2048,
+                    -1,
+                    0,
+                    1,
+                    333,
+                    64 * 2048,
+                    U64THS_LIMIT,
+                ] {
                     let exact = u as f64 * px as f64 * 1024.0 / (64.0 * upem as f64);
                     assert!((s.x(u) as f64 - exact).abs() <= 0.5 + exact.abs() * 2f64.powi(-15));
                 }
