@@ -39,7 +39,7 @@
 //! | [`outline`] | [`Glyph`]: one glyph's outline on the fine grid, a [`Shape`](crate::path::Shape); where `f32` appears |
 //! | [`run`] | [`GlyphRun`]: one line laid out (advances, kerning) as one shape and canvas outline |
 //! | [`layout`] | [`Alignment`], [`Baseline`], [`LineHeight`], [`TextStyle`]: embedded-graphics' conventions |
-//! | [`text`](self::text) | [`Text`] (draw, measure) and [`FontStyle`] (font, size, colour, opacity) |
+//! | [`text`] | [`Text`] (draw, measure) and [`FontStyle`] (font, size, colour, opacity) |
 //! | [`sharpen`] | [`Sharpen`]: baseline, x-height and glyph origins on the pixel grid, for 1-bit displays |
 //! | [`bundled`] | the bundled font's bytes (16 648) |
 //!
