@@ -51,6 +51,7 @@ pub mod memory;
 pub mod png_out;
 pub mod scene;
 pub mod scene_file;
+pub mod text_item;
 
 /// The repository README's code blocks, compiled and run as doc tests.
 #[cfg(doctest)]

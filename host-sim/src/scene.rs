@@ -59,6 +59,9 @@ pub enum Primitive<const C: usize> {
     /// given `depths`); without hidden-surface removal it is drawn as a
     /// plain triangle.
     Depth(DepthTriangle<C>),
+    /// Text in an outline font (scene files' `[[text]]`), composed over
+    /// what is drawn before it; hidden-surface removal leaves it out.
+    Text(Box<crate::text_item::TextItem<C>>),
 }
 
 impl<const C: usize> Primitive<C> {
@@ -77,6 +80,7 @@ impl<const C: usize> Primitive<C> {
             Self::Triangle(t) => t.draw(buf, style),
             Self::Depth(t) => t.draw(buf, style),
             Self::Line(l) | Self::DepthLine(l, _) => l.draw(buf, style),
+            Self::Text(t) => t.draw(buf, style),
             Self::Polygon { vertices, colors } => {
                 let colors = match colors {
                     PolyColors::Flat(c) => PolygonColors::Flat(*c),
@@ -103,6 +107,7 @@ impl<const C: usize> Primitive<C> {
             }
             Self::Line(l) => l.depth_triangles([0; 2], |t| out.push(t))?,
             Self::DepthLine(l, z) => l.depth_triangles(*z, |t| out.push(t))?,
+            Self::Text(_) => {}
         }
         Ok(())
     }

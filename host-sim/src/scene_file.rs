@@ -49,6 +49,7 @@ mod diag;
 mod display;
 mod objects;
 mod raw;
+mod text;
 #[cfg(feature = "window")]
 pub mod window;
 
@@ -749,6 +750,7 @@ impl Checker<'_> {
             softedge::scene3d::Faces::Front
         };
         items.extend(objects::objects::<C>(self, file, width, height, faces)?);
+        items.extend(text::texts::<C>(self, file)?);
         // File order across tables (a stable sort keeps ties as read).
         items.sort_by_key(|(o, _)| o.span.start);
         let mut scene = Scene::new(width, height, background);

@@ -41,6 +41,7 @@
 //! | [`layout`] | [`Alignment`], [`Baseline`], [`LineHeight`], [`TextStyle`]: embedded-graphics' conventions |
 //! | [`text`] | [`Text`] (draw, measure) and [`FontStyle`] (font, size, colour, opacity) |
 //! | [`sharpen`] | [`Sharpen`]: baseline, x-height and glyph origins on the pixel grid, for 1-bit displays |
+//! | [`one_bit`] | [`ContrastBoost`]: steeper coverage before 1-bit dithering (gain 2^shift, shifts only) |
 //! | [`bundled`] | the bundled font's bytes (16 648) |
 //!
 //! ## Floating point
@@ -68,6 +69,7 @@
 pub mod bundled;
 pub mod font;
 pub mod layout;
+pub mod one_bit;
 pub mod outline;
 pub mod run;
 pub mod scale;
@@ -77,6 +79,7 @@ pub mod text;
 
 pub use font::{Font, FontError, MAX_KERN_LOOKUPS};
 pub use layout::{Alignment, Baseline, LineHeight, TextStyle};
+pub use one_bit::{ContrastBoost, MAX_CONTRAST_SHIFT};
 pub use outline::Glyph;
 pub use run::GlyphRun;
 pub use scale::{Scale, TextSize};

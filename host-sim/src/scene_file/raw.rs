@@ -33,6 +33,24 @@ pub struct File {
     pub light: Option<Spanned<Light>>,
     #[serde(default)]
     pub object: Vec<Spanned<Object>>,
+    #[serde(default)]
+    pub text: Vec<Spanned<Text>>,
+}
+
+/// `[[text]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Text {
+    pub text: Spanned<String>,
+    pub position: Nums,
+    pub size: Num,
+    pub font: Option<Spanned<String>>,
+    pub align: Option<Spanned<String>>,
+    pub baseline: Option<Spanned<String>>,
+    pub line_height: Option<Num>,
+    pub color: Option<Color>,
+    pub opacity: Option<Num>,
+    pub sharpen: Option<Spanned<String>>,
 }
 
 /// `[display]`.
