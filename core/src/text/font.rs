@@ -85,6 +85,7 @@ impl core::error::Error for FontError {}
 pub struct Font<'a> {
     face: Face<'a>,
     upem: u16,
+    max_advance: u16,
     kern_lookups: heapless::Vec<u16, MAX_KERN_LOOKUPS>,
 }
 
@@ -133,9 +134,19 @@ impl<'a> Font<'a> {
                 }
             }
         }
+        // hhea's advanceWidthMax (bytes 10..12), which ttf-parser does not
+        // expose; an em when it is missing or zero.
+        let max_advance = face
+            .raw_face()
+            .table(Tag::from_bytes(b"hhea"))
+            .and_then(|t| t.get(10..12))
+            .map(|b| u16::from_be_bytes([b[0], b[1]]))
+            .filter(|&a| a > 0)
+            .unwrap_or(upem);
         Ok(Self {
             face,
             upem,
+            max_advance,
             kern_lookups,
         })
     }
@@ -170,6 +181,12 @@ impl<'a> Font<'a> {
     /// The advance width of a glyph, font units (0 when unknown).
     pub fn advance(&self, g: GlyphId) -> u16 {
         self.face.glyph_hor_advance(g).unwrap_or(0)
+    }
+
+    /// The largest advance of any glyph (`hhea`'s `advanceWidthMax`, an
+    /// em when the table lacks it), font units.
+    pub fn max_advance(&self) -> u16 {
+        self.max_advance
     }
 
     /// The ascender (positive, above the baseline), font units.

@@ -7,8 +7,8 @@
 //! fine units: sub-pixel positions to 1/1024 px), the run's advance width,
 //! and the whole run as one shape: a [`Shape`] (outlines into any
 //! [`PathSink`]) and a canvas [`Outline`] (closed contours, with bounds
-//! from the font's global box, so a band the line misses is rejected
-//! without reading a glyph).
+//! from the font's global box and the character count, so a band the line
+//! misses is rejected without reading a glyph).
 //!
 //! A run is one shape: where glyphs overlap (kerned pairs) nothing is
 //! covered twice, and an opacity applies to the run as a whole.
@@ -125,19 +125,31 @@ impl<'t, 'f, 'a> GlyphRun<'t, 'f, 'a> {
         pen.x - i64::from(self.origin.x)
     }
 
-    /// A box that holds every outline point of the run, from the font's
-    /// global box (y) and the pen's extent (x), widened by a pixel and
-    /// clamped into the coordinate range; `None` for an empty run.
+    /// A box that holds every outline point of the run, without reading a
+    /// glyph: y from the font's global box, x from the character count (at
+    /// most the largest advance plus an em of kerning per character, either
+    /// way), widened by a pixel and clamped into the coordinate range;
+    /// `None` for an empty run. (A band engine rejects by rows; x only
+    /// needs to be safe.)
     pub fn bounds(&self) -> Option<FineRect> {
         if self.text.is_empty() {
             return None;
         }
         let (x_min, y_min, x_max, y_max) = self.font.global_bbox();
         let one = i64::from(crate::geom::FINE_ONE);
-        let x0 = i64::from(self.origin.x) + self.scale.x_units(i32::from(x_min).min(0)) - one;
-        let x1 = i64::from(self.origin.x)
-            + self.advance().max(0)
-            + self.scale.x_units(i32::from(x_max).max(0))
+        let n = self.text.chars().count().min(1 << 20) as i32;
+        let upem = i32::from(self.font.units_per_em());
+        let ahead = n.saturating_mul(i32::from(self.font.max_advance()) + upem);
+        let back = n.saturating_mul(upem);
+        let x = i64::from(self.origin.x);
+        let x0 = x + self
+            .scale
+            .x_units(i32::from(x_min).min(0).saturating_sub(back))
+            - one;
+        let x1 = x
+            + self
+                .scale
+                .x_units(ahead.saturating_add(i32::from(x_max).max(0)))
             + one;
         let y = i64::from(self.origin.y);
         let y0 = y - self.scale.y_units(i32::from(y_max)) - one;

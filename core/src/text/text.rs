@@ -33,6 +33,7 @@ use super::Font;
 use crate::canvas::{Canvas, FineRect};
 use crate::color::IntoLinear;
 use crate::geom::FinePoint;
+use crate::path::Tolerance;
 use crate::raster::DrawError;
 use crate::style::{Blend, FillRule, Opacity};
 
@@ -62,6 +63,10 @@ pub struct FontStyle<'f, 'a, const C: usize> {
     pub kerning: bool,
     /// Grid fitting (none by default).
     pub sharpen: Sharpen,
+    /// How far flattened curves may stray (3 fine units, 1/341 px, by
+    /// default; a coarser one means fewer edges to walk: see the README's
+    /// text benchmark).
+    pub tolerance: Tolerance,
 }
 
 impl<'f, 'a, const C: usize> FontStyle<'f, 'a, C> {
@@ -77,7 +82,14 @@ impl<'f, 'a, const C: usize> FontStyle<'f, 'a, C> {
             opacity: Opacity::OPAQUE,
             kerning: true,
             sharpen: Sharpen::NONE,
+            tolerance: Tolerance::DEFAULT,
         }
+    }
+
+    /// With a flattening tolerance for the glyphs' curves.
+    pub fn with_tolerance(mut self, tol: Tolerance) -> Self {
+        self.tolerance = tol;
+        self
     }
 
     /// With a size in 1/64 px.
@@ -266,6 +278,7 @@ impl<'t, 'f, 'a, const C: usize> Text<'t, 'f, 'a, C> {
                 )
                 .with_kerning(self.style.kerning)
                 .with_sharpen(self.style.sharpen)
+                .with_tolerance(self.style.tolerance)
             };
             let x = i64::from(self.position.x);
             match self.text_style.alignment {
@@ -280,7 +293,7 @@ impl<'t, 'f, 'a, const C: usize> Text<'t, 'f, 'a, C> {
     /// style's colour and opacity, composed over what is there) and gives
     /// the pen position after the last glyph.
     pub fn draw(&self, canvas: &mut Canvas<'_, '_, C>) -> Result<FinePoint, DrawError> {
-        let mut next = self.position;
+        let mut last = None;
         for run in self.lines() {
             canvas.fill(
                 &run,
@@ -289,9 +302,10 @@ impl<'t, 'f, 'a, const C: usize> Text<'t, 'f, 'a, C> {
                 Blend::Over,
                 self.style.opacity,
             )?;
-            next = pen_end(&run);
+            last = Some(run);
         }
-        Ok(next)
+        // One more pass over the last line only (the pen's end).
+        Ok(last.map_or(self.position, |run| pen_end(&run)))
     }
 
     /// The layout without drawing: widths, boxes, next position.
