@@ -43,7 +43,7 @@ END {
     }
     printf "\nOpening the font (Font::new): %d instructions. Frame without text: %d (16-row bands), %d (one band).\n", v["parse"], v["empty"], v["empty_1band"]
 }' "$out"
-grep '^stack_bytes' "$out"
+grep -E "^(stack_bytes|font_bytes)" "$out"
 
 if [ -n "$size_tool" ]; then
     echo

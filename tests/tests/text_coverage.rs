@@ -5,13 +5,15 @@
 //! edge engine).
 //!
 //! - every glyph of the bundled font at 8, 12, 24 and 48 px, at random
-//!   sub-pixel origins: each pixel's coverage within 1/32 of the exact one;
+//!   sub-pixel origins: each pixel's coverage within 1/32 of the exact one
+//!   (also with the coarse tolerance of 16 fine units, 1/64 px);
 //! - strings: the summed intensity within 0.5 % of the exact area;
 //! - sub-pixel positioning: a string moved in 1/16-px steps keeps its summed
 //!   linear intensity within 0.5 % (seed 000's equal energy).
 
 use softedge::canvas::Canvas;
 use softedge::geom::FinePoint;
+use softedge::path::Tolerance;
 use softedge::text::{Font, GlyphRun, Scale, TextSize};
 use softedge::{Band, BandBuffer};
 use softedge_tests::glyph_ref::{string_outline, RefOutline};
@@ -67,11 +69,22 @@ fn characters() -> Vec<char> {
 
 #[test]
 fn every_glyph_is_within_a_32nd_of_exact_coverage_at_8_12_24_48_px() {
+    glyphs_against_exact(&[8, 12, 24, 48], Tolerance::DEFAULT);
+}
+
+#[test]
+fn a_coarse_tolerance_of_a_64th_px_stays_within_a_32nd_too() {
+    glyphs_against_exact(&[8, 12, 24], Tolerance::new(16));
+}
+
+/// Every glyph at each size against the exact coverage: worst and mean
+/// pixel error, asserted within 1/32.
+fn glyphs_against_exact(sizes: &[u16], tol: Tolerance) {
     let font = Font::bundled().unwrap();
     let face = face();
     let mut rng = Lcg(0x5eed_0017);
     let mut report = Vec::new();
-    for size in [8u16, 12, 24, 48] {
+    for &size in sizes {
         let (w, h) = (size * 2 + 8, size * 2 + 8);
         let mut worst: (f64, char) = (0.0, ' ');
         let mut sum_err = 0.0;
@@ -85,7 +98,7 @@ fn every_glyph_is_within_a_32nd_of_exact_coverage_at_8_12_24_48_px() {
             let scale = Scale::new(TextSize::px(size), font.units_per_em());
             let mut buf = [0u8; 4];
             let s = c.encode_utf8(&mut buf);
-            let run = GlyphRun::new(&font, s, FinePoint::new(ox, oy), scale);
+            let run = GlyphRun::new(&font, s, FinePoint::new(ox, oy), scale).with_tolerance(tol);
             let ours = draw(&run, w, h);
             let g = face.glyph_index(c).unwrap_or(ttf_parser::GlyphId(0));
             let reference = RefOutline::glyph(
@@ -108,10 +121,11 @@ fn every_glyph_is_within_a_32nd_of_exact_coverage_at_8_12_24_48_px() {
             }
         }
         report.push(format!(
-            "{size} px: worst pixel error {:.5} ({:?}), mean {:.6} over {pixels} pixels",
+            "tolerance {} fine: {size} px: worst pixel error {:.5} ({:?}), mean {:.6} over {pixels} pixels",
+            tol.fine(),
             worst.0,
             worst.1,
-            sum_err / pixels.max(1) as f64
+            sum_err / pixels.max(1) as f64,
         ));
         assert!(
             worst.0 <= 1.0 / 32.0,

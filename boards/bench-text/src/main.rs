@@ -11,6 +11,7 @@
 //! ```text
 //! insns_per_tick <num>/<den>
 //! insns <frame> <glyphs> <instructions>
+//! font_bytes <size of a Font>
 //! stack_bytes <n>
 //! done
 //! ```
@@ -178,6 +179,10 @@ fn main() -> ! {
         Line::new()
             .text("insns parse 0 ")
             .dec(counter.insns(ticks))
+            .print();
+        Line::new()
+            .text("font_bytes ")
+            .dec(core::mem::size_of::<Font<'static>>() as u64)
             .print();
         for (size, lines, name, mname) in [
             (12u16, LINES_12, "text12", "measure12"),

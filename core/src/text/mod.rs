@@ -50,14 +50,16 @@
 //! points as `f32` (integer font units for `glyf`), which
 //! [`outline::to_u64ths`] turns into integers at once (one `f32` multiply by
 //! 64 and one conversion per coordinate); everything after is integer
-//! fixed point. On a Cortex-M0 these few operations per outline point are
-//! soft-float library calls (no FPU needed); the per-pixel loops never see
-//! a float. See [`outline`].
+//! fixed point. The parser itself computes composite-glyph transforms and
+//! CFF charstrings in `f32` and CFF DICT operands in `f64`. On a Cortex-M0
+//! all of these are soft-float library calls, per outline point or per
+//! font opened (no FPU needed); the per-pixel loops never see a float. See
+//! [`outline`].
 //!
 //! ## Bounded memory and work
 //!
-//! No heap. A [`Font`] is the parser's table directory on the stack (about
-//! 1 KiB); drawing a glyph parses its outline in place (at most 32 levels
+//! No heap. A [`Font`] is the parser's table directory on the stack (896
+//! bytes on thumbv6m); drawing a glyph parses its outline in place (at most 32 levels
 //! of composite glyphs, CFF's 48-operand stack) and flattens it with the
 //! fixed-size [`Flattener`](crate::path::Flattener); nothing else is
 //! stored. Each line is described again in every band it touches; a band

@@ -21,8 +21,9 @@
 //! ([`Scale`]: one `i64` multiply and shift per point). On a Cortex-M0,
 //! which has no FPU, these are the soft-float routines `__aeabi_fmul` and
 //! `__aeabi_f2iz` (plus what the parser itself does in `f32` for composite
-//! transforms and CFF): per outline point, in set-up; no FPU is needed and
-//! no floating point reaches the per-pixel loops.
+//! transforms and CFF charstrings, and in `f64` for CFF DICT operands when
+//! a CFF font is opened): per outline point or per font, in set-up; no FPU
+//! is needed and no floating point reaches the per-pixel loops.
 //!
 //! ## Integer ranges
 //!
