@@ -73,6 +73,26 @@ fn kerning_matches_the_font_tools_reading_of_gpos() {
 }
 
 #[test]
+fn without_gpos_the_kern_table_gives_the_same_pairs() {
+    // The GPOS table renamed in the directory: the legacy `kern` table is
+    // what is left.
+    let n = usize::from(u16::from_be_bytes([FONT[4], FONT[5]]));
+    let mut bytes = FONT.to_vec();
+    let r = (0..n)
+        .map(|i| 12 + 16 * i)
+        .find(|&r| &FONT[r..r + 4] == b"GPOS")
+        .unwrap();
+    bytes[r..r + 4].copy_from_slice(b"xPOS");
+    let font = Font::new(&bytes).unwrap();
+    assert!(font.face().tables().gpos.is_none());
+    for (pair, units) in KERN_PAIRS {
+        let mut c = pair.chars();
+        let (l, r) = (font.glyph(c.next().unwrap()), font.glyph(c.next().unwrap()));
+        assert_eq!(font.kerning(l, r), units, "{pair}");
+    }
+}
+
+#[test]
 fn run_advance_is_the_sum_of_advances_and_kerning() {
     let font = font();
     let face = face();
