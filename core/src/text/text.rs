@@ -135,7 +135,6 @@ impl<'f, 'a, const C: usize> FontStyle<'f, 'a, C> {
 
 /// What a text occupies, without drawing it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct TextMetrics {
     /// The widest line's advance, fine units.
     pub width: i64,
@@ -146,6 +145,23 @@ pub struct TextMetrics {
     pub ink_box: Option<FineRect>,
     /// The pen after the last glyph of the last line.
     pub next_position: FinePoint,
+}
+
+#[cfg(feature = "defmt")]
+impl defmt::Format for TextMetrics {
+    fn format(&self, f: defmt::Formatter<'_>) {
+        let b = &self.layout_box;
+        defmt::write!(
+            f,
+            "TextMetrics {{ width: {}, layout_box: ({}, {})..({}, {}), next: {} }}",
+            self.width,
+            b.x0,
+            b.y0,
+            b.x1,
+            b.y1,
+            self.next_position
+        );
+    }
 }
 
 /// A string drawn with a font: the outline counterpart of
