@@ -85,6 +85,10 @@
 //! outline, in painter's order; also an embedded-graphics `DrawTarget`) and
 //! [`draw`] (embedded-graphics' primitives styled with an
 //! [`AaStyle`](draw::AaStyle)); [`prelude`] has what a frame needs.
+//! Text (feature `text`, on by default): [`text`] lays out strings in
+//! TrueType / OpenType fonts (`ttf-parser`) and hands their glyph outlines
+//! to the canvas as paths.
+//!
 //! Colours come in through [`color`]: sRGB colours (embedded-graphics
 //! colour types, 8-bit triples, `#rrggbb`) decoded to the linear 12-bit
 //! intensity every stage works in, or their luminance on one channel.
@@ -97,6 +101,8 @@
 //!   canvas as a `DrawTarget`, the embedded-graphics colour types of
 //!   [`tone::format`] and [`dither`](tone::dither), and
 //!   [`IntoLinear`](color::IntoLinear) for embedded-graphics' colour types.
+//! - `text` (default): [`text`], outline fonts through `ttf-parser`
+//!   (`no_std`, no heap), and the bundled Softedge Sans Subset font.
 //! - `defmt`: `defmt::Format` (defmt 1) for the public types, errors
 //!   included, so firmware can log them.
 //!
@@ -170,6 +176,9 @@ pub mod render;
 pub mod scene3d;
 pub mod shade;
 pub mod style;
+#[cfg(feature = "text")]
+#[cfg_attr(docsrs, doc(cfg(feature = "text")))]
+pub mod text;
 pub mod tone;
 mod units;
 

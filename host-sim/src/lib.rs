@@ -54,6 +54,7 @@ pub mod png_out;
 pub mod scene;
 pub mod scene_file;
 pub mod shape_item;
+pub mod text_item;
 
 /// The repository README's code blocks, compiled and run as doc tests.
 #[cfg(doctest)]

@@ -72,6 +72,9 @@ pub enum Primitive<const C: usize> {
     Mesh(Box<MeshItem<C>>),
     /// A primitive drawn at an opacity below 1 (scene files' `opacity`).
     Faded(Box<Primitive<C>>, Opacity),
+    /// Text in an outline font (scene files' `[[text]]`), composed over
+    /// what is drawn before it; hidden-surface removal leaves it out.
+    Text(Box<crate::text_item::TextItem<C>>),
 }
 
 impl<const C: usize> Primitive<C> {
@@ -90,6 +93,7 @@ impl<const C: usize> Primitive<C> {
             Self::Triangle(t) => t.draw(buf, style),
             Self::Depth(t) => t.draw(buf, style),
             Self::Line(l) | Self::DepthLine(l, _) => l.draw(buf, style),
+            Self::Text(t) => t.draw(buf, style),
             Self::Polygon { vertices, colors } => {
                 let colors = match colors {
                     PolyColors::Flat(c) => PolygonColors::Flat(*c),
@@ -145,6 +149,7 @@ impl<const C: usize> Primitive<C> {
                 m.draw(canvas, blend)
             }
             Self::Faded(p, a) => p.compose(canvas, blend, times(*a, opacity)),
+            Self::Text(t) => t.compose(canvas, times(t.opacity, opacity)),
         }
     }
 
@@ -170,6 +175,7 @@ impl<const C: usize> Primitive<C> {
             ),
             Self::Faded(p, _) => p.depth_triangles(out)?,
             Self::Shape(_) => {}
+            Self::Text(_) => {}
         }
         Ok(())
     }

@@ -50,6 +50,7 @@ mod display;
 mod objects;
 mod raw;
 mod shapes;
+mod text;
 #[cfg(feature = "window")]
 pub mod window;
 
@@ -821,6 +822,7 @@ impl Checker<'_> {
         };
         items.extend(objects::objects::<C>(self, file, width, height, faces)?);
         items.extend(shapes::shapes::<C>(self, file)?);
+        items.extend(text::texts::<C>(self, file)?);
         // File order across tables (a stable sort keeps ties as read).
         items.sort_by_key(|(o, _)| o.span.start);
         let blend = self.blend(file.render.as_ref())?;

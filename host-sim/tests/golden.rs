@@ -2,7 +2,7 @@
 //! pixel for pixel with the PNGs kept in `tests/golden/`.
 //!
 //! The set:
-//! - the eleven gallery images as `softedge-sim gallery --scale 2` writes them
+//! - every gallery image as `softedge-sim gallery --scale 2` writes them
 //!   (most panels magnified 2x: small files, labels still legible); any
 //!   change of coverage, shading, tone, dithering, the 3D path or the
 //!   post-filter, or of a figure printed in a label, shows;

@@ -13,10 +13,14 @@
 //!   sampling with exact depth comparisons: the hidden-surface reference.
 //! - [`path_ref`]: `f64` winding numbers, scanline areas, exact disc areas,
 //!   curve distances and stroke unions: the reference of the path tests.
+//! - [`glyph_ref`]: glyph outlines read by `ttf-parser`, flattened in `f64`
+//!   within 1e-5 px, and their exact area in every pixel: the reference of
+//!   the text tests.
 #![forbid(unsafe_code)]
 
 pub mod exact;
 pub mod frame;
+pub mod glyph_ref;
 pub mod path_ref;
 pub mod ratio;
 pub mod shapes;

@@ -13,6 +13,8 @@
 //! | `09-objects-3d_lod-low-vs-high.png` | sphere, torus, cone, cylinder, box and a composite, lit and anti-aliased, at a low and a high level of detail (module `objects`) |
 //! | `10-lightness-filter_plain-vs-lstar-vs-rgb-blur.png` | light colourful frames (thin shapes aliased and anti-aliased, a dithered 3-bit gradient, fine Gouraud texture): plain, through seed 002's L* filter, through a 3x3 RGB box blur, and maps of the filter's L* change and of the a*/b* shift of filter and blur; the measured shifts are printed (module `lightness`) |
 //! | `11-pixel-models_box-bed-hex-cone-gauss-hamming.png` | one small scene (a thin star, a 1-px line, a sliver) drawn with each pixel model — box exact and seed-001 formula, bed-of-nails 4x4 and 8x8, hexagonal 7 and 19 points, cone, Gaussian, Hamming — magnified four times more; each label gives the summed intensity against the box model (module `models`) |
+//! | `13-text_outlines-8-48px-vs-eg-mono-fonts.png` | text in the bundled outline font at 8 to 48 px on an RGB display, anti-aliased in linear light, beside embedded-graphics' mono fonts 4x6 to 10x20 drawn by e-g (module `text`) |
+//! | `14-text-1bit_gray-threshold-bayer-fs-grid-boost-vs-eg.png` | four lines of an instrument display on a 128x64 1-bit OLED at 10, 11 and 12 px: the gray frame, its threshold at 1/2, Bayer 8x8, Floyd–Steinberg, Floyd–Steinberg with `Sharpen::GRID` and `ContrastBoost`; e-g's `FONT_6X10` and `FONT_6X13` (module `text`) |
 //!
 //! Every panel is rendered band by band ([`render`]), converted to sRGB by
 //! [`lin12_to_srgb8`](crate::image::lin12_to_srgb8) (image 06 goes through
@@ -41,6 +43,7 @@ mod lightness;
 mod models;
 mod objects;
 mod oled;
+mod text;
 
 /// Options of [`write_gallery`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -136,7 +139,7 @@ impl std::error::Error for GalleryError {
 }
 
 /// Number of files [`write_gallery`] writes.
-pub const GALLERY_FILES: usize = 15;
+pub const GALLERY_FILES: usize = 17;
 
 /// Renders the gallery into `dir` (created if missing). `log` receives one
 /// progress line per image and one `wrote PATH (WxH)` line per file.
@@ -362,6 +365,23 @@ pub fn write_gallery(
         log,
     )?;
 
+    // (m) Text: sizes on a colour display, beside e-g's mono fonts.
+    log(&format!(
+        "[13/{n}] text: softedge outlines 8-48 px | e-g mono fonts"
+    ));
+    let sheet = text::sizes_sheet(opts.band_rows, scale)?;
+    save("13-text_outlines-8-48px-vs-eg-mono-fonts.png", &sheet, log)?;
+
+    // (n) Text on a 1-bit OLED.
+    log(&format!(
+        "[14/{n}] text on 1 bit: gray | threshold | Bayer | Floyd-Steinberg | grid + boost | e-g mono"
+    ));
+    let sheet = text::one_bit_sheet(scale)?;
+    save(
+        "14-text-1bit_gray-threshold-bayer-fs-grid-boost-vs-eg.png",
+        &sheet,
+        log,
+    )?;
     // (j) Drawing a user interface.
     log(&format!(
         "[15/{n}] compositing: add | over | opacity | a mesh as one shape vs its triangles"

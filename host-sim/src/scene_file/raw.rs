@@ -49,6 +49,24 @@ pub struct File {
     pub path: Vec<Spanned<Path>>,
     #[serde(default)]
     pub mesh: Vec<Spanned<Mesh>>,
+    #[serde(default)]
+    pub text: Vec<Spanned<Text>>,
+}
+
+/// `[[text]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Text {
+    pub text: Spanned<String>,
+    pub position: Nums,
+    pub size: Num,
+    pub font: Option<Spanned<String>>,
+    pub align: Option<Spanned<String>>,
+    pub baseline: Option<Spanned<String>>,
+    pub line_height: Option<Num>,
+    pub color: Option<Color>,
+    pub opacity: Option<Num>,
+    pub sharpen: Option<Spanned<String>>,
 }
 
 /// `[display]`.

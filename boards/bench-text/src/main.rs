@@ -1,0 +1,272 @@
+//! The Cortex-M0 text benchmark: instructions per glyph of
+//! `softedge::text` (the bundled font) drawn through the frame loop into a
+//! 320x240 Rgb565 frame in 16-row bands, counted by SysTick under
+//! `qemu-system-arm -machine mps2-an385 -icount shift=0` (thumbv6m code on
+//! the board's Cortex-M3). `bash boards/bench-text.sh` builds it with and
+//! without the `text` feature, runs it and prints the table and the flash
+//! sizes.
+//!
+//! Output:
+//!
+//! ```text
+//! insns_per_tick <num>/<den>
+//! insns <frame> <glyphs> <instructions>
+//! font_bytes <size of a Font>
+//! stack_bytes <n>
+//! done
+//! ```
+//!
+//! Frames: `empty` (the frame loop, a disc and no text: the fixed cost),
+//! `text12` / `text24` (the same plus four lines at 12 / 24 px), each also
+//! as `*_1band` (the whole frame one band of 240 rows: no line described
+//! twice) and `*_tol16` (16-row bands, curves flattened within 16 fine
+//! units, 1/64 px, instead of 3), `parse`
+//! (opening the font: `Font::new`), `measure12` / `measure24` (laying the
+//! same lines out without drawing). Per glyph: `(text - empty) / glyphs`,
+//! every character but the line breaks counted (spaces too).
+#![no_std]
+#![no_main]
+
+use cortex_m_rt::{entry, exception};
+use embedded_graphics_core::draw_target::DrawTarget;
+use embedded_graphics_core::geometry::{OriginDimensions, Size};
+use embedded_graphics_core::pixelcolor::Rgb565;
+use embedded_graphics_core::primitives::Rectangle;
+use embedded_graphics_core::Pixel;
+use softedge::canvas::{Canvas, WalkSlot};
+use softedge::geom::FinePoint;
+use softedge::path::Circle;
+use softedge::render::Renderer;
+use softedge::style::{Blend, FillRule, Opacity};
+use softedge::tone::format::Rgb565Format;
+use softedge::tone::Curve;
+use softedge::{BandBuffer, DrawError};
+use softedge_board_common::{self as fw, insns::Counter, Line};
+
+const W: u16 = 320;
+const H: u16 = 240;
+const ROWS: u16 = 16;
+const ACC_LEN: usize = BandBuffer::<3>::acc_len(W, ROWS);
+const COVER_LEN: usize = BandBuffer::<3>::cover_len(W, ROWS);
+const SLOTS: usize = 64;
+/// The whole frame as one band: the cost without describing a line again
+/// in each band it touches.
+const ACC_ONE: usize = BandBuffer::<3>::acc_len(W, H);
+const COVER_ONE: usize = BandBuffer::<3>::cover_len(W, H);
+
+static RGB565: Rgb565Format = Rgb565Format::new(Curve::Srgb);
+
+/// A display that takes the colours and keeps a checksum (so nothing is
+/// optimised away); its cost is the same in every frame.
+struct Sink(u32);
+
+impl OriginDimensions for Sink {
+    fn size(&self) -> Size {
+        Size::new(u32::from(W), u32::from(H))
+    }
+}
+
+impl DrawTarget for Sink {
+    type Color = Rgb565;
+    type Error = core::convert::Infallible;
+    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
+        &mut self,
+        px: I,
+    ) -> Result<(), Self::Error> {
+        for Pixel(_, c) in px {
+            self.0 = self.0.wrapping_add(u32::from(
+                embedded_graphics_core::pixelcolor::IntoStorage::into_storage(c),
+            ));
+        }
+        Ok(())
+    }
+    fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(
+        &mut self,
+        _: &Rectangle,
+        colors: I,
+    ) -> Result<(), Self::Error> {
+        for c in colors {
+            self.0 = self.0.wrapping_add(u32::from(
+                embedded_graphics_core::pixelcolor::IntoStorage::into_storage(c),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The lines drawn at 12 px (and their first halves at 24 px).
+#[cfg(feature = "text")]
+const LINES_12: &str = "The quick brown fox jumps over\nthe lazy dog. 0123456789 °C ±µ\nSphinx of black quartz, judge\nmy vow! AVAWAY Ty To 3.71 V";
+#[cfg(feature = "text")]
+const LINES_24: &str = "The quick brown\nfox: 0123 °C\nSphinx of black\nquartz 3.71 V";
+
+/// Characters drawn (line breaks left out).
+#[cfg(feature = "text")]
+fn glyphs(s: &str) -> u64 {
+    s.chars().filter(|&c| c != '\n').count() as u64
+}
+
+#[entry]
+fn main() -> ! {
+    static mut ACC: [i32; ACC_LEN] = [0; ACC_LEN];
+    static mut COVER: [i32; COVER_LEN] = [0; COVER_LEN];
+    static mut SLOT: [WalkSlot<3>; SLOTS] = [WalkSlot::EMPTY; SLOTS];
+    static mut ACC1: [i32; ACC_ONE] = [0; ACC_ONE];
+    static mut COVER1: [i32; COVER_ONE] = [0; COVER_ONE];
+    fw::stack::paint();
+    let Some(core) = cortex_m::Peripherals::take() else {
+        fw::exit(false)
+    };
+    let counter = Counter::start(core.SYST);
+    let (num, den) = counter.insns_per_tick();
+    Line::new()
+        .text("insns_per_tick ")
+        .dec(num)
+        .text("/")
+        .dec(den)
+        .print();
+    let mut ok = true;
+    #[cfg_attr(not(feature = "text"), allow(unused_mut))]
+    let mut measured_ok = true;
+    let Ok(mut banded) = Renderer::new(ACC, COVER, SLOT, W, H, ROWS) else {
+        fw::exit(false)
+    };
+    let Ok(mut whole) = Renderer::new(ACC1, COVER1, &mut [], W, H, H) else {
+        fw::exit(false)
+    };
+    let mut sink = Sink(0);
+    let disc = Circle::new(FinePoint::new(280 * 1024, 200 * 1024), 30 * 1024);
+    let mut frame =
+        |name: &str,
+         one_band: bool,
+         glyphs: u64,
+         draw: &mut dyn FnMut(&mut Canvas<'_, '_, 3>) -> Result<(), DrawError>| {
+            let mut good = false;
+            let r = if one_band { &mut whole } else { &mut banded };
+            let ticks = counter.measure(|| {
+                good = r
+                    .render(&mut sink, &RGB565, [0, 0, 0], |c| {
+                        c.fill_shape(
+                            &disc,
+                            [4095, 2000, 0],
+                            FillRule::NonZero,
+                            Blend::Over,
+                            Opacity::OPAQUE,
+                        )?;
+                        draw(c)
+                    })
+                    .is_ok();
+            });
+            ok &= good;
+            Line::new()
+                .text(if good { "insns " } else { "error " })
+                .text(name)
+                .text(if one_band { "_1band" } else { "" })
+                .text(" ")
+                .dec(glyphs)
+                .text(" ")
+                .dec(counter.insns(ticks))
+                .print();
+        };
+    frame("empty", false, 0, &mut |_| Ok(()));
+    frame("empty", true, 0, &mut |_| Ok(()));
+    #[cfg(feature = "text")]
+    {
+        use softedge::text::{Baseline, Font, FontStyle, Text};
+        let mut font = None;
+        let ticks = counter.measure(|| font = Font::bundled().ok());
+        let Some(font) = font else { fw::exit(false) };
+        Line::new()
+            .text("insns parse 0 ")
+            .dec(counter.insns(ticks))
+            .print();
+        Line::new()
+            .text("font_bytes ")
+            .dec(core::mem::size_of::<Font<'static>>() as u64)
+            .print();
+        for (size, lines, name, mname) in [
+            (12u16, LINES_12, "text12", "measure12"),
+            (24, LINES_24, "text24", "measure24"),
+        ] {
+            let style = FontStyle::<3>::new(&font, size, [4095, 4095, 4095]);
+            let text = Text::with_baseline(
+                lines,
+                FinePoint::new(4 * 1024 + 300, 8 * 1024),
+                style,
+                Baseline::Top,
+            );
+            if size == 12 {
+                bench_profile_on();
+            }
+            frame(name, false, glyphs(lines), &mut |c| {
+                text.draw(c).map(|_| ())
+            });
+            if size == 12 {
+                bench_profile_off();
+            }
+            frame(name, true, glyphs(lines), &mut |c| text.draw(c).map(|_| ()));
+            // Curves flattened within 1/64 px instead of 1/341 px.
+            let coarse = Text {
+                style: style.with_tolerance(softedge::path::Tolerance::new(16)),
+                ..text
+            };
+            let tname = if size == 12 {
+                "text12_tol16"
+            } else {
+                "text24_tol16"
+            };
+            frame(tname, false, glyphs(lines), &mut |c| {
+                coarse.draw(c).map(|_| ())
+            });
+            let mut w = 0;
+            let ticks = counter.measure(|| w = text.measure().width);
+            measured_ok &= w > 0;
+            Line::new()
+                .text("insns ")
+                .text(mname)
+                .text(" ")
+                .dec(glyphs(lines))
+                .text(" ")
+                .dec(counter.insns(ticks))
+                .print();
+        }
+    }
+    ok &= measured_ok;
+    Line::new().text("checksum ").hex8(sink.0).print();
+    Line::new()
+        .text("stack_bytes ")
+        .dec(fw::stack::used_bytes() as u64)
+        .print();
+    ok &= fw::stack::margin_bytes() >= fw::stack::MIN_MARGIN_BYTES;
+    if ok {
+        Line::new().text("done").print();
+    }
+    fw::exit(ok)
+}
+
+/// What the profile marks write (see boards/bench-m0: a volatile store
+/// keeps the two functions apart and present).
+static mut PROFILE_MARK: u32 = 0;
+
+/// Entered right before the 12-px text frame: `boards/bench-text.sh
+/// --profile` counts instructions by function from here to
+/// [`bench_profile_off`] (with boards/tools/insn-profile.c).
+#[no_mangle]
+#[inline(never)]
+pub extern "C" fn bench_profile_on() {
+    // SAFETY: a plain word only these two functions write (single core).
+    unsafe { core::ptr::addr_of_mut!(PROFILE_MARK).write_volatile(1) }
+}
+
+/// Entered right after the 12-px text frame.
+#[no_mangle]
+#[inline(never)]
+pub extern "C" fn bench_profile_off() {
+    // SAFETY: as in `bench_profile_on`.
+    unsafe { core::ptr::addr_of_mut!(PROFILE_MARK).write_volatile(2) }
+}
+
+#[exception]
+fn SysTick() {
+    fw::insns::on_wrap();
+}
