@@ -124,12 +124,14 @@
 //! the band height. Accuracy, storage and cost: [`draw_warnock`].
 
 mod depth_plane;
+mod range_clip;
 mod section;
 mod warnock;
 pub mod weiler;
 mod zbuffer;
 
 pub use depth_plane::{DepthPlane, DEPTH_FRAC};
+pub(crate) use range_clip::quad_depth_triangles;
 pub use section::Section;
 pub use warnock::{
     draw_warnock, scratch_len, WarnockStats, LEVELS, MAX_PARTIAL, MAX_TRIANGLES, ROOT_LOG2_SUB,
