@@ -361,11 +361,28 @@ pub const fn zbuffer_passes(style: &RenderStyle) -> &'static [ZPass] {
 /// first. Ties are broken by the vertices, depths and colours, so the order
 /// is a function of the set of triangles alone (the same on every target).
 pub fn sort_front_to_back<const C: usize>(tris: &mut [DepthTriangle<C>]) {
-    tris.sort_unstable_by(|a, b| {
-        b.depth_key()
-            .cmp(&a.depth_key())
-            .then_with(|| order_by_content(a, b))
-    });
+    tris.sort_unstable_by(front_to_back);
+}
+
+/// The order of [`sort_front_to_back`], for sorting triangles kept with
+/// something else (a caller's record of where each came from): `Less` when
+/// `a` is drawn before `b`.
+///
+/// ```
+/// use softedge::hsr::{front_to_back, DepthTriangle};
+/// use softedge::SubPoint;
+/// let p = |x, y| SubPoint::from_px(x, y);
+/// let far = DepthTriangle::new([p(0, 0), p(8, 0), p(0, 8)], [[1000]; 3], [100; 3]);
+/// let near = DepthTriangle::new([p(0, 0), p(4, 0), p(0, 4)], [[3000]; 3], [900; 3]);
+/// // Sorted with their sources' names, without searching afterwards.
+/// let mut tagged = [(far, "wall"), (near, "card")];
+/// tagged.sort_unstable_by(|(a, _), (b, _)| front_to_back(a, b));
+/// assert_eq!(tagged.map(|(_, name)| name), ["card", "wall"]);
+/// ```
+pub fn front_to_back<const C: usize>(a: &DepthTriangle<C>, b: &DepthTriangle<C>) -> Ordering {
+    b.depth_key()
+        .cmp(&a.depth_key())
+        .then_with(|| order_by_content(a, b))
 }
 
 fn order_by_content<const C: usize>(a: &DepthTriangle<C>, b: &DepthTriangle<C>) -> Ordering {

@@ -576,6 +576,8 @@ pub struct WeilerStats {
 pub struct VisibleSet<const N: usize> {
     pieces: Vec<VisiblePiece, N>,
     lines: Vec<ClipLine, N>,
+    /// The triangle being clipped when the last `compute` failed.
+    failed_at: Option<usize>,
 }
 
 impl<const N: usize> Default for VisibleSet<N> {
@@ -734,7 +736,17 @@ impl<const N: usize> VisibleSet<N> {
         Self {
             pieces: Vec::new(),
             lines: Vec::new(),
+            failed_at: None,
         }
+    }
+
+    /// After a failed [`compute`](Self::compute): the index of the
+    /// triangle whose clipping (or, for the conforming step, whose pieces)
+    /// ran out of storage or was rejected, so a caller can say which of its
+    /// objects the frame failed at; `None` after a success, or when the
+    /// input was refused before any triangle (more than `u16::MAX`).
+    pub fn failed_at(&self) -> Option<usize> {
+        self.failed_at
     }
 
     /// The visible pieces of the last [`compute`](Self::compute).
@@ -756,10 +768,13 @@ impl<const N: usize> VisibleSet<N> {
         &mut self,
         tris: &[DepthTriangle<C>],
     ) -> Result<WeilerStats, HsrError> {
+        self.failed_at = None;
         let r = self.compute_inner(tris);
         if r.is_err() {
             self.pieces.clear();
             self.lines.clear();
+        } else {
+            self.failed_at = None;
         }
         r
     }
@@ -773,11 +788,13 @@ impl<const N: usize> VisibleSet<N> {
         if tris.len() > usize::from(u16::MAX) {
             return Err(HsrError::Capacity { needed: tris.len() });
         }
-        for t in tris {
+        for (p, t) in tris.iter().enumerate() {
+            self.failed_at = Some(p);
             setup(t)?;
         }
         let mut stats = WeilerStats::default();
         for (p, tp) in tris.iter().enumerate() {
+            self.failed_at = Some(p);
             let Some(tp) = setup(tp)? else { continue };
             let start = self.pieces.len();
             let mut first = Poly::<PIECE_VERTICES>::with_source(p as u16);
@@ -1036,6 +1053,7 @@ impl<const N: usize> VisibleSet<N> {
                 break;
             };
             let x = x.0;
+            self.failed_at = Some(usize::from(x.source));
             let mut out = Outline::with_source(x.source);
             for k in 0..usize::from(x.len) {
                 let (p, e) = x.at(k);
