@@ -105,8 +105,10 @@
 //! sides of each cut; [`VisibleSet::draw`] accumulates them in every band
 //! with their source triangle's Gouraud plane, so seed 000's accumulation
 //! is exact at intersections too. Exact where the visible boundaries are
-//! the triangles' own edges; elsewhere the boundary passes through vertices
-//! rounded to 1/16 px ([`weiler`] states the bound).
+//! the triangles' own edges; elsewhere the boundary passes through cut
+//! vertices rounded to the fine grid, 1/1024 px ([`weiler`] states the
+//! bound: within 1/1024 px of coverage per moved edge; measured worst 2.4
+//! levels of 4095 against the exact visible area).
 //!
 //! ## Warnock's subdivision
 //!
@@ -124,6 +126,7 @@
 //! the band height. Accuracy, storage and cost: [`draw_warnock`].
 
 mod depth_plane;
+mod fine_fill;
 mod range_clip;
 mod section;
 mod warnock;
