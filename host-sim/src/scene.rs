@@ -458,7 +458,7 @@ impl<const C: usize> BandStore<C> {
             acc: vec![0i32; BandBuffer::<C>::acc_len(width, rows)],
             cover: vec![0i32; BandBuffer::<C>::cover_len(width, rows)],
             depth: vec![0u16; zlen],
-            covered: vec![0u16; zlen],
+            covered: vec![0u16; 2 * zlen],
             scratch: Vec::new(),
         }
     }

@@ -247,7 +247,7 @@ impl Strip {
 /// `floor(n / d)` for `d > 0`.
 fn div_floor(n: i128, d: i128) -> i128 {
     let q = n.checked_div(d).unwrap_or(0);
-    if (n % d.max(1) != 0) && ((n < 0) != (d < 0)) {
+    if n.checked_rem(d).unwrap_or(0) != 0 && ((n < 0) != (d < 0)) {
         q - 1
     } else {
         q
