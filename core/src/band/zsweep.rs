@@ -68,12 +68,6 @@ impl<const C: usize> BandBuffer<'_, C> {
                         krow.get_mut(x),
                         mrow.get_mut(x),
                     ) {
-                        // The fragment's samples (issue #18; see `share`).
-                        let (m, near) = match samples {
-                            _ if s_px == full => (ALL_SAMPLES, ALL_SAMPLES),
-                            Some(se) => se.masks(&e, x as i32, y),
-                            None => (0, 0),
-                        };
                         // What the pass does with this pixel: `None` skips
                         // it, `Some(true)` replaces it, `Some(false)`
                         // composites under it.
@@ -105,6 +99,13 @@ impl<const C: usize> BandBuffer<'_, C> {
                                 *zd = z;
                             }
                             Some(false) => {
+                                // The fragment's samples (issue #18; see
+                                // `share`), only where the pass draws it.
+                                let (m, near) = match samples {
+                                    _ if s_px == full => (ALL_SAMPLES, ALL_SAMPLES),
+                                    Some(se) => se.masks(&e, x as i32, y),
+                                    None => (0, 0),
+                                };
                                 let s = share(s_px, i32::from(*k), m, near, *mk, pass);
                                 if s > 0 {
                                     for ch in 0..C {

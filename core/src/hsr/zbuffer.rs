@@ -279,17 +279,46 @@ impl SampleEdges {
     }
 
     fn samples_inside(&self, e: &[i64; 3], grow: [i64; 3]) -> u16 {
-        let mut m = 0u16;
-        let mut bit = 0;
-        for j in 0..4 {
-            for i in 0..4 {
-                let inside = (0..3).all(|k| {
-                    let v =
-                        e[k] + i64::from(self.columns[k][i]) + i64::from(self.rows[k][j]) + grow[k];
-                    v > 0 || (v == 0 && self.ties[k])
-                });
-                m |= u16::from(inside) << bit;
-                bit += 1;
+        // Edge by edge: 16 compares each, the bits assembled without
+        // branches; stop when nothing is left.
+        let mut m = ALL_SAMPLES;
+        for (k, &ek) in e.iter().enumerate() {
+            let (Some(cols), Some(rows), Some(&g), Some(&tie)) = (
+                self.columns.get(k),
+                self.rows.get(k),
+                grow.get(k),
+                self.ties.get(k),
+            ) else {
+                return 0;
+            };
+            // The samples include the pixel's corners and the edge is
+            // straight: with all four corners strictly inside every sample
+            // is, with all four strictly outside none is.
+            let corners = [
+                ek + g,
+                ek + g + i64::from(cols[3]),
+                ek + g + i64::from(rows[3]),
+                ek + g + i64::from(cols[3]) + i64::from(rows[3]),
+            ];
+            if corners.iter().all(|&v| v > 0) {
+                continue;
+            }
+            if corners.iter().all(|&v| v < 0) {
+                return 0;
+            }
+            let mut edge = 0u16;
+            let mut bit = 0;
+            for &r in rows {
+                let base = ek + g + i64::from(r);
+                for &c in cols {
+                    let v = base + i64::from(c);
+                    edge |= u16::from(v > 0 || (tie && v == 0)) << bit;
+                    bit += 1;
+                }
+            }
+            m &= edge;
+            if m == 0 {
+                break;
             }
         }
         m
