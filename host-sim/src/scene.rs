@@ -617,6 +617,44 @@ where
 mod tests {
     use super::*;
 
+    #[test]
+    fn sorted_depth_triangles_keep_their_source_primitive() {
+        // Issue #18: the sort carries each triangle's primitive index (it
+        // was searched for afterwards, quadratic in the triangle count).
+        let p = |x, y| SubPoint::from_px(x, y);
+        let mut s = Scene::<1>::new(16, 16, [0]);
+        for k in 0..40u16 {
+            let x = i32::from(k % 8);
+            s.primitives.push(Primitive::Depth(DepthTriangle::new(
+                [p(x, 0), p(x + 6, 2), p(x, 9)],
+                [[k * 100]; 3],
+                [(k * 977) % 60_000, (k * 31) % 60_000, 5 + k],
+            )));
+            // Polygons give several triangles for one primitive.
+            s.primitives.push(Primitive::flat_polygon(
+                vec![p(x, 10), p(x + 4, 10), p(x + 4, 14), p(x, 14)],
+                [k],
+            ));
+        }
+        s.hsr = Hsr::ZBuffer;
+        let Prepared::ZBuffer(tris, sources) = Prepared::new(&s).unwrap() else {
+            panic!("a z-buffer frame")
+        };
+        assert_eq!(tris.len(), sources.len());
+        assert_eq!(tris.len(), 40 + 40 * 2);
+        for (t, &i) in tris.iter().zip(&sources) {
+            let mut own = Vec::new();
+            s.primitives[i].depth_triangles(&mut own).unwrap();
+            assert!(own.contains(t), "triangle {t:?} is not from primitive {i}");
+        }
+        for pair in tris.windows(2) {
+            assert_ne!(
+                front_to_back(&pair[0], &pair[1]),
+                std::cmp::Ordering::Greater
+            );
+        }
+    }
+
     fn star_scene() -> Scene<3> {
         let mut s = Scene::new(40, 37, [100, 200, 300]);
         s.primitives.push(Primitive::Triangle(Triangle::new(
