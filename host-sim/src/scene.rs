@@ -250,11 +250,29 @@ impl Hsr {
     }
 }
 
+/// What core's [`DrawError`] means, for a message.
+pub fn draw_error_text(error: DrawError) -> String {
+    use softedge::{COORD_LIMIT_PX, MAX_POLYGON_VERTICES};
+    match error {
+        DrawError::Coord(c) => format!(
+            "a vertex is outside ±{COORD_LIMIT_PX} px: ({}, {}) in 1/16 px",
+            c.point.x, c.point.y
+        ),
+        DrawError::TooManyVertices => format!("more than {MAX_POLYGON_VERTICES} vertices"),
+        DrawError::ColorCount => {
+            "per-vertex colours or depths for a different number of vertices".into()
+        }
+        DrawError::SelfIntersecting => {
+            "the polygon intersects itself (two of its edges touch or cross)".into()
+        }
+    }
+}
+
 /// What a hidden-surface error means, in words, with the limit it hit.
 pub fn hsr_error_text(method: Hsr, error: HsrError) -> String {
     use softedge::hsr::{MAX_TRIANGLES as WARNOCK_TRIANGLES, PIECE_VERTICES};
     match (method, error) {
-        (_, HsrError::Draw(e)) => format!("primitive rejected: {e:?}"),
+        (_, HsrError::Draw(e)) => draw_error_text(e),
         (_, HsrError::BandMismatch) => {
             "internal: the depth buffer holds another band than the band buffer".into()
         }
@@ -298,7 +316,13 @@ impl fmt::Display for RenderError {
                 "band at row {} ({}x{}) rejected: {error:?}",
                 band.y0, band.width, band.rows
             ),
-            Self::Draw { index, error } => write!(f, "primitive #{index} rejected: {error:?}"),
+            Self::Draw { index, error } => {
+                write!(
+                    f,
+                    "primitive #{index} rejected: {}",
+                    draw_error_text(*error)
+                )
+            }
             Self::Filter(error) => write!(f, "lightness filter rejected the frame: {error:?}"),
             Self::TooManyTriangles {
                 method,

@@ -61,7 +61,7 @@ use toml::Spanned;
 pub use diag::{Diagnostic, Severity};
 pub use display::{pnm16, DisplayCodes, Linear};
 
-use crate::scene::{Hsr, PolyColors, Primitive, RenderError, Scene};
+use crate::scene::{draw_error_text, Hsr, PolyColors, Primitive, RenderError, Scene};
 use diag::Source;
 
 /// Largest frame side, pixels (the band buffer's limit).
@@ -329,25 +329,6 @@ impl SceneFile {
             RenderError::Band { .. } | RenderError::Filter(_) => {
                 src.error(self.display_span.clone(), "display", e.to_string())
             }
-        }
-    }
-}
-
-/// What core's [`softedge::DrawError`] means, for a message.
-fn draw_error_text(error: softedge::DrawError) -> String {
-    match error {
-        softedge::DrawError::Coord(c) => format!(
-            "a vertex is outside ±{COORD_LIMIT_PX} px: ({}, {}) in 1/16 px",
-            c.point.x, c.point.y
-        ),
-        softedge::DrawError::TooManyVertices => {
-            format!("more than {MAX_POLYGON_VERTICES} vertices")
-        }
-        softedge::DrawError::ColorCount => {
-            "per-vertex colours or depths for a different number of vertices".into()
-        }
-        softedge::DrawError::SelfIntersecting => {
-            "the polygon intersects itself (two of its edges touch or cross)".into()
         }
     }
 }
