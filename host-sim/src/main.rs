@@ -23,9 +23,10 @@ COMMANDS:
                 Render a scene file band by band, run the display's tone
                 stage (its format and γ) and write what the display shows
                 as PNG, upscaled by --scale (default 1, 1..=64, nearest
-                neighbour). --raw: also write the linear 12-bit values
-                before the tone stage (after the scene's lightness filter,
-                if on) as 16-bit Netpbm (P5 gray, P6 RGB).
+                neighbour; at most 2^26 pixels in all). --raw: also write
+                the linear 12-bit values before the tone stage (after the
+                scene's lightness filter, if on) as 16-bit Netpbm (P5
+                gray, P6 RGB).
     crc SCENE.toml
                 Print `crc <stem> <crc32>`: the CRC-32 of the display's
                 byte stream (its codes, row by row).
@@ -219,6 +220,7 @@ fn render(args: &[String]) -> Result<(), Failure> {
     }
     let out = out.ok_or_else(|| Failure::Usage("render needs -o OUT.png".into()))?;
     let file = load_scene(&scene)?;
+    check_scaled_size(&file, scale)?;
     let lin = file
         .render_linear()
         .map_err(|d| Failure::Run(d.to_string()))?;
@@ -286,6 +288,7 @@ fn window(args: &[String]) -> Result<(), Failure> {
         scale = number(name, &v, 1, 64)? as u32;
     }
     let file = load_scene(&scene)?;
+    check_scaled_size(&file, scale)?;
     scene_file::window::show(&file, scale).map_err(Failure::Run)
 }
 
@@ -296,6 +299,35 @@ fn window(_args: &[String]) -> Result<(), Failure> {
          `cargo run -p softedge-sim --features window -- window SCENE.toml` (needs SDL2)"
             .into(),
     ))
+}
+
+/// Most pixels `render` and `window` show after `--scale`: 2^26 (64 Mi
+/// pixels, 192 MiB of 8-bit RGB), so a large frame cannot be magnified
+/// into tens of gigabytes. A 2048x2048 frame takes `--scale 4`.
+const MAX_SCALED_PIXELS: u64 = 1 << 26;
+
+fn check_scaled_size(file: &SceneFile, scale: u32) -> Result<(), Failure> {
+    let (w, h) = file.size();
+    let (sw, sh) = (
+        u64::from(w) * u64::from(scale),
+        u64::from(h) * u64::from(scale),
+    );
+    if sw * sh <= MAX_SCALED_PIXELS {
+        return Ok(());
+    }
+    // The largest scale that fits (at least 1: the frame itself is at most
+    // 2048 x 2048 = 2^22 pixels).
+    let fit = ((MAX_SCALED_PIXELS / (u64::from(w) * u64::from(h))) as f64)
+        .sqrt()
+        .floor()
+        .max(1.0) as u64;
+    Err(Failure::Usage(format!(
+        "--scale {scale} would make a {sw}x{sh} image of the {w}x{h} scene \
+         ({} pixels); at most {MAX_SCALED_PIXELS} pixels ({} MiB of RGB) are made: \
+         use --scale {fit} or less",
+        sw * sh,
+        (MAX_SCALED_PIXELS * 3) >> 20
+    )))
 }
 
 fn number(name: &str, text: &str, lo: u64, hi: u64) -> Result<u64, Failure> {

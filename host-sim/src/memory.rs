@@ -15,7 +15,7 @@ pub struct BandMemory {
     pub cover: usize,
     /// The z-buffer's depths: one `u16` per pixel.
     pub depth: usize,
-    /// The z-buffer's coverage counts: one `u16` per pixel.
+    /// The z-buffer's coverage counts and sample masks: two `u16`s per pixel.
     pub covered: usize,
 }
 
@@ -44,7 +44,7 @@ pub fn band_memory(width: u16, channels: usize, rows: u16) -> BandMemory {
         acc: 4 * acc,
         cover: 4 * BandBuffer::<1>::cover_len(width, rows),
         depth: 2 * DepthBuffer::len(width, rows),
-        covered: 2 * DepthBuffer::len(width, rows),
+        covered: 2 * DepthBuffer::covered_len(width, rows),
     }
 }
 
@@ -95,10 +95,10 @@ mod tests {
         let m = band_memory(240, 3, 16);
         assert_eq!(
             (m.acc, m.cover, m.depth, m.covered),
-            (46_080, 15_616, 7_680, 7_680)
+            (46_080, 15_616, 7_680, 15_360)
         );
-        assert_eq!(m.zbuffer(), 77_056);
+        assert_eq!(m.zbuffer(), 84_736);
         let one = band_memory(240, 3, 1);
-        assert_eq!(one.zbuffer(), 2_880 + 976 + 480 + 480);
+        assert_eq!(one.zbuffer(), 2_880 + 976 + 480 + 960);
     }
 }

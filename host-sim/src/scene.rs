@@ -18,8 +18,8 @@
 use std::fmt;
 
 use softedge::hsr::{
-    draw_warnock, draw_zbuffer, scratch_len, sort_front_to_back, DepthBuffer, DepthTriangle,
-    HsrError, Section, VisibleSet,
+    draw_warnock, front_to_back, scratch_len, zbuffer_passes, DepthBuffer, DepthTriangle, HsrError,
+    Section, VisibleSet, ZPass,
 };
 use softedge::postfilter::{FilterError, FilterStats, LightnessFilter, LightnessPixel};
 use softedge::{
@@ -208,6 +208,11 @@ pub enum Hsr {
 /// its own `N`; 164 bytes per piece, 24 per line).
 pub const WEILER_CAPACITY: usize = 4096;
 
+/// Most depth triangles the simulator gives Weiler–Atherton per frame: its
+/// clipping tests every ordered pair (8192 triangles: 67 M box tests,
+/// about a second), so the work is bounded before it starts.
+pub const MAX_WEILER_TRIANGLES: usize = 8192;
+
 /// A frame: size, band height, style, background and primitives.
 ///
 /// `C` is the number of colour channels: 1 (gray) or 3 (RGB). Colours are
@@ -315,8 +320,106 @@ pub enum RenderError {
     },
     /// The post-filter rejected the frame size or its buffers.
     Filter(FilterError),
-    /// A hidden-surface method failed.
-    Hsr(HsrError),
+    /// The frame has more depth triangles than `method` takes
+    /// ([`MAX_WEILER_TRIANGLES`], or Warnock's
+    /// [`MAX_TRIANGLES`](softedge::hsr::MAX_TRIANGLES)).
+    TooManyTriangles {
+        /// The method.
+        method: Hsr,
+        /// The primitive whose triangles passed the limit.
+        index: usize,
+        /// The frame's triangles.
+        count: usize,
+        /// The method's limit.
+        limit: usize,
+    },
+    /// A hidden-surface method failed (for capacity: the frame needs more
+    /// than the simulator's storage for that method holds).
+    Hsr {
+        /// The method.
+        method: Hsr,
+        /// The primitive (index in [`Scene::primitives`]) it failed at,
+        /// when the method can tell.
+        index: Option<usize>,
+        /// Why.
+        error: HsrError,
+    },
+}
+
+impl Hsr {
+    /// The name used in scene files (`render.hsr`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::None => "none",
+            Self::ZBuffer => "zbuffer",
+            Self::Warnock => "warnock",
+            Self::WeilerAtherton => "weiler-atherton",
+        }
+    }
+}
+
+/// What core's [`DrawError`] means, for a message.
+pub fn draw_error_text(error: DrawError) -> String {
+    use softedge::{COORD_LIMIT_PX, MAX_POLYGON_VERTICES};
+    match error {
+        DrawError::Coord(c) => format!(
+            "a vertex is outside ±{COORD_LIMIT_PX} px: ({}, {}) in 1/16 px",
+            c.point.x, c.point.y
+        ),
+        DrawError::TooManyVertices => format!("more than {MAX_POLYGON_VERTICES} vertices"),
+        DrawError::ColorCount => {
+            "per-vertex colours or depths for a different number of vertices".into()
+        }
+        DrawError::SelfIntersecting => {
+            "the polygon intersects itself (two of its edges touch or cross)".into()
+        }
+        DrawError::FineCoord(p) => format!(
+            "a point is outside ±{COORD_LIMIT_PX} px: ({}, {}) in 1/1024 px",
+            p.x, p.y
+        ),
+        DrawError::BadIndex => "a mesh triangle names a point the mesh does not have".into(),
+        other => other.to_string(),
+    }
+}
+
+/// What a hidden-surface error means, in words, with the limit it hit.
+pub fn hsr_error_text(method: Hsr, error: HsrError) -> String {
+    use softedge::hsr::{MAX_TRIANGLES as WARNOCK_TRIANGLES, PIECE_VERTICES};
+    match (method, error) {
+        (_, HsrError::Draw(e)) => draw_error_text(e),
+        (_, HsrError::BandMismatch) => {
+            "internal: the depth buffer holds another band than the band buffer".into()
+        }
+        (Hsr::WeilerAtherton, HsrError::Capacity { needed }) if needed == PIECE_VERTICES + 1 => {
+            format!(
+                "weiler-atherton: a visible piece collected more cut vertices than the {} \
+                 a piece may be split into (twice {PIECE_VERTICES}); too many surfaces cut \
+                 it: use coarser objects or hsr = \"zbuffer\"",
+                2 * PIECE_VERTICES
+            )
+        }
+        (Hsr::WeilerAtherton, HsrError::Capacity { needed }) if needed > usize::from(u16::MAX) => {
+            format!(
+                "weiler-atherton takes at most {} triangles per frame, this frame has {needed}",
+                u16::MAX
+            )
+        }
+        (Hsr::WeilerAtherton, HsrError::Capacity { .. }) => format!(
+            "weiler-atherton ran out of storage: the frame needs more than the \
+             {WEILER_CAPACITY} visible pieces and {WEILER_CAPACITY} clip lines the \
+             simulator keeps per frame ({} KB); use fewer or coarser objects, or \
+             hsr = \"zbuffer\"",
+            WEILER_CAPACITY * (std::mem::size_of::<softedge::hsr::VisiblePiece>() + 24) / 1000
+        ),
+        (Hsr::Warnock, HsrError::Capacity { needed }) if needed > WARNOCK_TRIANGLES => format!(
+            "warnock takes at most {WARNOCK_TRIANGLES} triangles per frame, this frame \
+             has {needed}: use fewer or coarser objects, or hsr = \"zbuffer\""
+        ),
+        (m, HsrError::Capacity { needed }) => format!(
+            "{}: scratch storage too small ({needed} entries needed)",
+            m.name()
+        ),
+    }
 }
 
 impl fmt::Display for RenderError {
@@ -327,9 +430,35 @@ impl fmt::Display for RenderError {
                 "band at row {} ({}x{}) rejected: {error:?}",
                 band.y0, band.width, band.rows
             ),
-            Self::Draw { index, error } => write!(f, "primitive #{index} rejected: {error:?}"),
+            Self::Draw { index, error } => {
+                write!(
+                    f,
+                    "primitive #{index} rejected: {}",
+                    draw_error_text(*error)
+                )
+            }
             Self::Filter(error) => write!(f, "lightness filter rejected the frame: {error:?}"),
-            Self::Hsr(error) => write!(f, "hidden-surface removal failed: {error:?}"),
+            Self::TooManyTriangles {
+                method,
+                index,
+                count,
+                limit,
+            } => write!(
+                f,
+                "primitive #{index}: hsr = {} takes at most {limit} triangles per frame, \
+                 this frame has {count}",
+                method.name()
+            ),
+            Self::Hsr {
+                method,
+                index,
+                error,
+            } => {
+                if let Some(i) = index {
+                    write!(f, "primitive #{i}: ")?;
+                }
+                f.write_str(&hsr_error_text(*method, *error))
+            }
         }
     }
 }
@@ -366,9 +495,9 @@ pub fn render<const C: usize>(scene: &Scene<C>) -> Result<LinImage<C>, RenderErr
 enum Prepared<const C: usize> {
     /// Accumulated in order.
     Plain,
-    /// Depth triangles, front to back, through the z-buffer (with the
-    /// index of the primitive each came from).
-    ZBuffer(Vec<(DepthTriangle<C>, usize)>),
+    /// Depth triangles, front to back, through the z-buffer, and the index
+    /// of the primitive each came from (kept through the sort).
+    ZBuffer(Vec<DepthTriangle<C>>, Vec<usize>),
     /// Section lines and faces, accumulated (with their primitive's index).
     Section(Vec<(Primitive<C>, usize)>),
     /// Weiler–Atherton's visible pieces of the frame's depth triangles.
@@ -411,25 +540,39 @@ impl<const C: usize> Prepared<C> {
             }
             return Ok(Self::Section(out));
         }
+        let limit = match scene.hsr {
+            Hsr::WeilerAtherton => MAX_WEILER_TRIANGLES,
+            Hsr::Warnock => softedge::hsr::MAX_TRIANGLES,
+            Hsr::None | Hsr::ZBuffer => usize::MAX,
+        };
+        if let Some(&(_, index)) = tris.get(limit) {
+            return Err(RenderError::TooManyTriangles {
+                method: scene.hsr,
+                index,
+                count: tris.len(),
+                limit,
+            });
+        }
         if scene.hsr == Hsr::Warnock {
             return Ok(Self::Warnock(tris.iter().map(|(t, _)| *t).collect()));
         }
         if scene.hsr == Hsr::WeilerAtherton {
+            let sources: Vec<usize> = tris.iter().map(|(_, i)| *i).collect();
             let tris: Vec<DepthTriangle<C>> = tris.iter().map(|(t, _)| *t).collect();
             let mut set = Box::new(VisibleSet::new());
-            set.compute(&tris).map_err(RenderError::Hsr)?;
+            set.compute(&tris).map_err(|error| RenderError::Hsr {
+                method: Hsr::WeilerAtherton,
+                index: set.failed_at().and_then(|k| sources.get(k).copied()),
+                error,
+            })?;
             return Ok(Self::Weiler(tris, set));
         }
         // Sorted front to back once per frame (ties by content: the order
-        // does not depend on the file's order of equal-depth triangles).
-        let mut keyed: Vec<DepthTriangle<C>> = tris.iter().map(|(t, _)| *t).collect();
-        sort_front_to_back(&mut keyed);
-        let mut sorted = Vec::with_capacity(tris.len());
-        for t in keyed {
-            let index = tris.iter().find(|(u, _)| *u == t).map_or(0, |(_, i)| *i);
-            sorted.push((t, index));
-        }
-        Ok(Self::ZBuffer(sorted))
+        // does not depend on the file's order of equal-depth triangles),
+        // each with its source: n log n, no search afterwards.
+        tris.sort_unstable_by(|(a, i), (b, j)| front_to_back(a, b).then(i.cmp(j)));
+        let (sorted, sources) = tris.into_iter().unzip();
+        Ok(Self::ZBuffer(sorted, sources))
     }
 }
 
@@ -446,14 +589,14 @@ struct BandStore<const C: usize> {
 impl<const C: usize> BandStore<C> {
     fn new(width: u16, rows: u16, frame: &Prepared<C>) -> Self {
         let zlen = match frame {
-            Prepared::ZBuffer(_) => DepthBuffer::len(width, rows),
+            Prepared::ZBuffer(..) => DepthBuffer::len(width, rows),
             _ => 0,
         };
         Self {
             acc: vec![0i32; BandBuffer::<C>::acc_len(width, rows)],
             cover: vec![0i32; BandBuffer::<C>::cover_len(width, rows)],
             depth: vec![0u16; zlen],
-            covered: vec![0u16; zlen],
+            covered: vec![0u16; 2 * zlen],
             scratch: Vec::new(),
         }
     }
@@ -486,27 +629,45 @@ impl<const C: usize> BandStore<C> {
                 }
             }
             Prepared::Weiler(tris, set) => {
-                set.draw(tris, &mut buf, style).map_err(RenderError::Hsr)?;
+                set.draw(tris, &mut buf, style)
+                    .map_err(|error| RenderError::Hsr {
+                        method: Hsr::WeilerAtherton,
+                        index: None,
+                        error,
+                    })?;
             }
             Prepared::Warnock(tris) => {
                 // Warnock resolves edges by area itself: no pixel model.
                 if self.scratch.len() < scratch_len(tris.len()) {
                     self.scratch.resize(scratch_len(tris.len()), 0);
                 }
-                draw_warnock(tris, &mut buf, &mut self.scratch).map_err(RenderError::Hsr)?;
+                draw_warnock(tris, &mut buf, &mut self.scratch).map_err(|error| {
+                    RenderError::Hsr {
+                        method: Hsr::Warnock,
+                        index: None,
+                        error,
+                    }
+                })?;
             }
-            Prepared::ZBuffer(tris) => {
+            Prepared::ZBuffer(tris, sources) => {
                 let mut zbuf = DepthBuffer::new(&mut self.depth, &mut self.covered, band)
                     .map_err(|error| RenderError::Band { band, error })?;
-                let (tris, index): (Vec<_>, Vec<_>) = tris.iter().copied().unzip();
-                draw_zbuffer(&tris, &mut buf, &mut zbuf, style).map_err(|e| match e {
-                    // Vertices were checked when the frame was prepared.
-                    HsrError::Draw(error) => RenderError::Draw {
-                        index: index.first().copied().unwrap_or(0),
-                        error,
-                    },
-                    other => RenderError::Hsr(other),
-                })?;
+                // `draw_zbuffer`'s passes, spelled out so that an error
+                // names the triangle's primitive (vertices were checked when
+                // the frame was prepared, so none is expected).
+                for &pass in zbuffer_passes(style) {
+                    for (t, &index) in tris.iter().zip(sources) {
+                        t.draw_z(&mut buf, &mut zbuf, style, pass)
+                            .map_err(|error| RenderError::Hsr {
+                                method: Hsr::ZBuffer,
+                                index: Some(index),
+                                error,
+                            })?;
+                    }
+                    if pass == ZPass::Centres {
+                        zbuf.finish_centres();
+                    }
+                }
             }
         }
         done(&buf);
@@ -592,6 +753,44 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn sorted_depth_triangles_keep_their_source_primitive() {
+        // Issue #18: the sort carries each triangle's primitive index (it
+        // was searched for afterwards, quadratic in the triangle count).
+        let p = |x, y| SubPoint::from_px(x, y);
+        let mut s = Scene::<1>::new(16, 16, [0]);
+        for k in 0..40u16 {
+            let x = i32::from(k % 8);
+            s.primitives.push(Primitive::Depth(DepthTriangle::new(
+                [p(x, 0), p(x + 6, 2), p(x, 9)],
+                [[k * 100]; 3],
+                [(k * 977) % 60_000, (k * 31) % 60_000, 5 + k],
+            )));
+            // Polygons give several triangles for one primitive.
+            s.primitives.push(Primitive::flat_polygon(
+                vec![p(x, 10), p(x + 4, 10), p(x + 4, 14), p(x, 14)],
+                [k],
+            ));
+        }
+        s.hsr = Hsr::ZBuffer;
+        let Prepared::ZBuffer(tris, sources) = Prepared::new(&s).unwrap() else {
+            panic!("a z-buffer frame")
+        };
+        assert_eq!(tris.len(), sources.len());
+        assert_eq!(tris.len(), 40 + 40 * 2);
+        for (t, &i) in tris.iter().zip(&sources) {
+            let mut own = Vec::new();
+            s.primitives[i].depth_triangles(&mut own).unwrap();
+            assert!(own.contains(t), "triangle {t:?} is not from primitive {i}");
+        }
+        for pair in tris.windows(2) {
+            assert_ne!(
+                front_to_back(&pair[0], &pair[1]),
+                std::cmp::Ordering::Greater
+            );
+        }
+    }
 
     fn star_scene() -> Scene<3> {
         let mut s = Scene::new(40, 37, [100, 200, 300]);

@@ -69,13 +69,27 @@ use toml::Spanned;
 pub use diag::{Diagnostic, Severity};
 pub use display::{pnm16, DisplayCodes, Linear};
 
-use crate::scene::{Hsr, PolyColors, Primitive, RenderError, Scene};
+use crate::scene::{draw_error_text, Hsr, PolyColors, Primitive, RenderError, Scene};
 use crate::shape_item::MeshItem;
 use diag::Source;
 use softedge::style::{Blend, Opacity};
 
 /// Largest frame side, pixels (the band buffer's limit).
 pub const MAX_SIDE: i64 = softedge::band::MAX_WIDTH as i64;
+
+/// Most `[[object]]` tables in a scene file. Each object is meshed and
+/// projected on its own (its mesh and projection scratch, up to 65 536
+/// vertices, are freed before the next); what stays is its triangles,
+/// bounded by [`MAX_TRIANGLES`].
+pub const MAX_OBJECTS: usize = 256;
+
+/// Most triangles a scene file's frame may hold, counted as the file is
+/// read: one per `[[triangle]]`, `n - 2` per polygon of `n` points, two
+/// per line, and an object's whole mesh before back-face culling. At about
+/// 110 bytes per triangle kept (the scene's primitive, its source index
+/// and, with `hsr`, the sorted depth triangle and its index) that bounds
+/// a frame's geometry at about 60 MB.
+pub const MAX_TRIANGLES: usize = 1 << 19;
 
 /// The pixel format of the display a scene is shown on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -131,7 +145,8 @@ pub enum Frame {
     Rgb(Scene<3>),
 }
 
-/// Where a primitive of the scene came from, for error messages.
+/// Where primitives of the scene came from, for error messages: one
+/// table of the file.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Origin {
     /// Its field path, `polygon[2]` or `object[0]`.
@@ -156,10 +171,16 @@ pub struct SceneFile {
     pub lightness_filter: bool,
     /// The frame, ready for [`crate::scene::render`].
     pub frame: Frame,
-    /// Where each primitive of `frame` came from (same order).
+    /// The tables the primitives of `frame` came from, in file order.
     pub origins: Vec<Origin>,
+    /// For each primitive of `frame`, the index of its table in `origins`
+    /// (an object's thousands of triangles share one [`Origin`]).
+    pub primitive_origins: Vec<u32>,
     /// Warnings (coordinates rounded to 1/16 px).
     pub warnings: Vec<Diagnostic>,
+    /// Spans for errors found when rendering: `[display]`, `[render] hsr`.
+    display_span: Range<usize>,
+    hsr_span: Option<Range<usize>>,
 }
 
 /// Reads and checks a scene file; an unreadable file is a diagnostic
@@ -183,6 +204,7 @@ pub fn parse(path: &Path, text: &str) -> Result<SceneFile, Diagnostic> {
     let mut ck = Checker {
         src: src.clone(),
         warnings: Vec::new(),
+        triangles: 0,
     };
     let format = ck.format(&file.display.get_ref().format)?;
     let (style, curve, band_rows) = ck.render(file.render.as_ref())?;
@@ -195,7 +217,7 @@ pub fn parse(path: &Path, text: &str) -> Result<SceneFile, Diagnostic> {
     let d = file.display.get_ref();
     let width = ck.int(&d.width, "display.width", 1, MAX_SIDE)? as u16;
     let height = ck.int(&d.height, "display.height", 1, MAX_SIDE)? as u16;
-    let (frame, origins) = match format.channels() {
+    let (frame, (origins, primitive_origins)) = match format.channels() {
         1 => {
             let (mut s, o) = ck.scene::<1>(&file, width, height, band_rows, style)?;
             (s.hsr, s.section) = (hsr, section);
@@ -207,6 +229,11 @@ pub fn parse(path: &Path, text: &str) -> Result<SceneFile, Diagnostic> {
             (Frame::Rgb(s), o)
         }
     };
+    let hsr_span = file
+        .render
+        .as_ref()
+        .and_then(|r| r.get_ref().hsr.as_ref())
+        .map(|h| h.span());
     Ok(SceneFile {
         path: path.to_path_buf(),
         text: text.to_string(),
@@ -215,7 +242,10 @@ pub fn parse(path: &Path, text: &str) -> Result<SceneFile, Diagnostic> {
         lightness_filter,
         frame,
         origins,
+        primitive_origins,
         warnings: ck.warnings,
+        display_span: file.display.span(),
+        hsr_span,
     })
 }
 
@@ -257,41 +287,59 @@ impl SceneFile {
         display::tone(lin, self.format, self.curve)
     }
 
+    /// The table primitive `index` of the frame came from.
+    pub fn origin_of(&self, index: usize) -> Option<&Origin> {
+        let k = *self.primitive_origins.get(index)?;
+        self.origins.get(k as usize)
+    }
+
     fn render_error(&self, e: RenderError) -> Diagnostic {
         let src = Source {
             path: &self.path,
             text: &self.text,
         };
+        // An error about a primitive is placed at its table; one about the
+        // frame at `[render] hsr` (or `[display]` for the frame's size).
+        let hsr_at = || {
+            self.hsr_span
+                .clone()
+                .map_or((self.display_span.clone(), "display"), |s| {
+                    (s, "render.hsr")
+                })
+        };
+        let at_primitive =
+            |index: Option<usize>, message: String| match index.and_then(|i| self.origin_of(i)) {
+                Some(o) => src.error(o.span.clone(), o.field.clone(), message),
+                None => {
+                    let (span, field) = hsr_at();
+                    src.error(span, field, message)
+                }
+            };
         match e {
-            RenderError::Draw { index, error } => {
-                let origin = self.origins.get(index).cloned().unwrap_or(Origin {
-                    field: format!("primitive #{index}"),
-                    span: 0..0,
-                });
-                src.error(origin.span, origin.field, draw_error_text(error))
+            RenderError::Draw { index, error } => at_primitive(Some(index), draw_error_text(error)),
+            RenderError::Hsr {
+                method,
+                index,
+                error,
+            } => at_primitive(index, crate::scene::hsr_error_text(method, error)),
+            RenderError::TooManyTriangles {
+                method,
+                index,
+                count,
+                limit,
+            } => at_primitive(
+                Some(index),
+                format!(
+                    "hsr = \"{}\" takes at most {limit} triangles per frame, and this one \
+                     reaches {count} here (its work grows with the square of the count): \
+                     use fewer or coarser objects, or hsr = \"zbuffer\"",
+                    method.name()
+                ),
+            ),
+            RenderError::Band { .. } | RenderError::Filter(_) => {
+                src.error(self.display_span.clone(), "display", e.to_string())
             }
-            other => src.error(0..0, "display", other.to_string()),
         }
-    }
-}
-
-/// What core's [`softedge::DrawError`] means, for a message.
-fn draw_error_text(error: softedge::DrawError) -> String {
-    match error {
-        softedge::DrawError::Coord(c) => format!(
-            "a vertex is outside ±{COORD_LIMIT_PX} px: ({}, {}) in 1/16 px",
-            c.point.x, c.point.y
-        ),
-        softedge::DrawError::TooManyVertices => {
-            format!("more than {MAX_POLYGON_VERTICES} vertices")
-        }
-        softedge::DrawError::ColorCount => {
-            "per-vertex colours or depths for a different number of vertices".into()
-        }
-        softedge::DrawError::SelfIntersecting => {
-            "the polygon intersects itself (two of its edges touch or cross)".into()
-        }
-        other => format!("{other:?}"),
     }
 }
 
@@ -352,13 +400,38 @@ fn depth_code(z: f64) -> u16 {
 struct Checker<'a> {
     src: Source<'a>,
     warnings: Vec<Diagnostic>,
+    /// Triangles of the frame so far (see [`MAX_TRIANGLES`]).
+    triangles: usize,
 }
 
 type Checked<T> = Result<T, Diagnostic>;
 
+/// The tables of a scene, and the table of each primitive.
+type Origins = (Vec<Origin>, Vec<u32>);
+
 impl Checker<'_> {
     fn err<T>(&self, span: Range<usize>, field: &str, message: impl Into<String>) -> Checked<T> {
         Err(self.src.error(span, field, message))
+    }
+
+    /// Counts `n` more triangles of the entry `field` (at `span`) towards
+    /// [`MAX_TRIANGLES`].
+    fn count_triangles(&mut self, n: usize, span: Range<usize>, field: &str) -> Checked<()> {
+        let total = self.triangles.saturating_add(n);
+        if total > MAX_TRIANGLES {
+            return self.err(
+                span,
+                field,
+                format!(
+                    "the frame would have {total} triangles with this one's {n}, more than \
+                     the {MAX_TRIANGLES} a scene file may have (about {} MB of geometry); \
+                     use fewer segments or objects",
+                    MAX_TRIANGLES * 110 / 1_000_000
+                ),
+            );
+        }
+        self.triangles = total;
+        Ok(())
     }
 
     fn int(&self, v: &raw::Int, field: &str, lo: i64, hi: i64) -> Checked<i64> {
@@ -687,7 +760,7 @@ impl Checker<'_> {
         height: u16,
         band_rows: u16,
         style: RenderStyle,
-    ) -> Checked<(Scene<C>, Vec<Origin>)> {
+    ) -> Checked<(Scene<C>, Origins)> {
         let background = match &file.display.get_ref().background {
             Some(b) => self.color::<C>(b, "display.background")?,
             None => [0; C],
@@ -714,6 +787,7 @@ impl Checker<'_> {
                 PolyColors::Flat(c) => [c; 3],
                 PolyColors::PerVertex(cs) => [cs[0], cs[1], cs[2]],
             };
+            self.count_triangles(1, t.span(), &field)?;
             let p = match &tr.depths {
                 None => Primitive::Triangle(Triangle::new([a, b, c], colors)),
                 Some(d) => {
@@ -744,6 +818,7 @@ impl Checker<'_> {
                     ),
                 );
             }
+            self.count_triangles(pts.len() - 2, p.span(), &field)?;
             let colors = self.vertex_colors::<C>(
                 pr.colors.as_ref(),
                 pr.color.as_ref(),
@@ -793,6 +868,7 @@ impl Checker<'_> {
                 PolyColors::Flat(c) => [c; 2],
                 PolyColors::PerVertex(cs) => [cs[0], cs[1]],
             };
+            self.count_triangles(2, l.span(), &field)?;
             let line = Line::new(from, to, colors);
             let p = match &lr.depths {
                 None => Primitive::Line(line),
@@ -835,15 +911,16 @@ impl Checker<'_> {
         scene.band_rows = band_rows;
         scene.style = style;
         scene.blend = blend;
-        let mut origins = Vec::new();
-        for (origin, prims) in items {
+        let mut origins = Vec::with_capacity(items.len());
+        let mut primitive_origins = Vec::new();
+        for (k, (origin, prims)) in items.into_iter().enumerate() {
             let mut prims = prims;
-            if let Some(k) = origin
+            if let Some(j) = origin
                 .field
                 .strip_prefix("object[")
                 .and_then(|r| r.strip_suffix(']'))
             {
-                let o = k.parse::<usize>().ok().and_then(|k| file.object.get(k));
+                let o = j.parse::<usize>().ok().and_then(|j| file.object.get(j));
                 if let Some(o) = o {
                     let op = self.opacity(
                         o.get_ref().opacity.as_ref(),
@@ -855,12 +932,13 @@ impl Checker<'_> {
             if one_shape {
                 prims = as_one_mesh(prims);
             }
-            for p in prims {
-                scene.primitives.push(p);
-                origins.push(origin.clone());
-            }
+            // At most MAX_TRIANGLES primitives and tables: k fits.
+            let k = k as u32;
+            primitive_origins.extend(std::iter::repeat_n(k, prims.len()));
+            scene.primitives.extend(prims);
+            origins.push(origin);
         }
-        Ok((scene, origins))
+        Ok((scene, (origins, primitive_origins)))
     }
 }
 
@@ -882,7 +960,9 @@ mod tests {
              [[line]]\nfrom = [1, 0]\nto = [5, 4]\ncolor = [3]\n"
         );
         let f = parse_str(&text).unwrap();
-        let fields: Vec<_> = f.origins.iter().map(|o| o.field.as_str()).collect();
+        let fields: Vec<_> = (0..3)
+            .map(|k| f.origin_of(k).unwrap().field.as_str())
+            .collect();
         assert_eq!(fields, ["line[0]", "triangle[0]", "line[1]"]);
     }
 

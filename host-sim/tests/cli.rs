@@ -52,15 +52,15 @@ fn memory_prints_the_band_ram_table() {
     assert!(out.status.success());
     let text = String::from_utf8_lossy(&out.stdout);
     // 240x240 Rgb565 (3 channels), 16 rows: 46080 + 15616 plain, plus
-    // 7680 + 7680 for the z-buffer.
+    // 7680 + 15360 for the z-buffer (depth; coverage and sample mask).
     assert!(
-        text.contains("  16    46080    15616     7680     7680    61696     77056"),
+        text.contains("  16    46080    15616     7680    15360    61696     84736"),
         "{text}"
     );
     let out = sim(&["memory", "--width", "128", "--channels", "1", "--rows", "8"]);
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(
-        text.contains("   8     4096     4224     2048     2048     8320     12416"),
+        text.contains("   8     4096     4224     2048     4096     8320     14464"),
         "{text}"
     );
     for bad in [

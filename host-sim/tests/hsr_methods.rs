@@ -5,10 +5,11 @@
 //! Warnock (`softedge::hsr::draw_warnock`) and Weiler–Atherton
 //! (`softedge::hsr::VisibleSet`) are independent implementations of exact
 //! visibility by area: Warnock within 1/256 px per pixel where it samples,
-//! Weiler–Atherton within its cut vertices' rounding to 1/16 px (up to
-//! 1/16 px of a pixel's area next to a rounded vertex). Their frames must
-//! agree within the sum of those bounds at full contrast, `4095 * (1/16 +
-//! 1/256)` = 272 levels, plus one rounding each.
+//! Weiler–Atherton within its cut vertices' rounding (1/1024 px with the
+//! box model; up to 1/16 px of a pixel's area next to a vertex rounded to
+//! 1/16 px, the bound used here). Their frames must agree within the sum
+//! of those bounds at full contrast, `4095 * (1/16 + 1/256)` = 272 levels,
+//! plus one rounding each.
 
 use std::path::Path;
 
@@ -55,6 +56,10 @@ fn warnock_and_weiler_atherton_agree() {
     let (max, mean) = diff(&warnock, &weiler);
     println!("Warnock vs Weiler-Atherton: max {max} levels, mean {mean:.3}");
     assert!(max <= 274, "max {max}");
+    // Measured: 4 levels since Weiler–Atherton's cut vertices are on the
+    // 1/1024-px grid (issue #18; 272 with 1/16 px): both within
+    // `4095 / 256 + 1` of the exact visible area.
+    assert!(max <= 2 * 17, "max {max}");
     // Almost every pixel is exact in both: the mean stays far below a level.
     assert!(mean < 1.0, "mean {mean}");
     // The anti-aliased z-buffer differs along intersection curves, which it

@@ -13,7 +13,7 @@ use softedge::scene3d::{Projection, Shape as Solid};
 use softedge::{PixelModel, SubPoint};
 use softedge_refscenes::stream::Format;
 use softedge_refscenes::{
-    render_crc, Buffers, Fill, Scene, Shape, ACC_LEN, COVER_LEN, DEPTH_LEN, SCENES,
+    render_crc, Buffers, Fill, Scene, Shape, ACC_LEN, COVERED_LEN, COVER_LEN, DEPTH_LEN, SCENES,
 };
 
 fn px(v: i32) -> String {
@@ -196,7 +196,7 @@ fn scene_files_of_the_reference_scenes_are_up_to_date() {
 #[test]
 fn softedge_sim_crc_of_each_reference_scene_file_equals_the_firmware_line() {
     let (mut acc, mut cover) = (vec![0i32; ACC_LEN], vec![0i32; COVER_LEN]);
-    let (mut depth, mut covered) = (vec![0u16; DEPTH_LEN], vec![0u16; DEPTH_LEN]);
+    let (mut depth, mut covered) = (vec![0u16; DEPTH_LEN], vec![0u16; COVERED_LEN]);
     let mut bufs = Buffers {
         acc: &mut acc,
         cover: &mut cover,

@@ -269,14 +269,17 @@ fn bad_3d_input_is_named() {
         "object[0]",
         "minor_radius < radius",
     );
-    // A zero light direction with diffuse light.
+    // A zero light direction with diffuse light: at the direction (line
+    // 10), not at the first object (line 12; issue #18).
     let light = "[light]\ndirection = [0, 0, 0]\ndiffuse = 0.5\n";
     expect(
         &format!("{HEAD}{CAMERA}{light}{obj}"),
-        12,
+        10,
         "light.direction",
         "zero",
     );
+    let d = error_of(&format!("{HEAD}{CAMERA}{light}{obj}"));
+    assert_eq!(d.column, 13, "{d}");
     // A perspective camera without fov_y.
     let cam = "[camera]\nprojection = \"perspective\"\neye = [0, 0, 10]\n";
     expect(
@@ -340,4 +343,98 @@ fn hidden_surface_keys() {
         "camera.far",
         "beyond near",
     );
+}
+
+// ------------------------------------------------- bounds (issue #18)
+
+/// A torus object table.
+fn torus(segments: u32, tube: u32, x: f64) -> String {
+    format!(
+        "[[object]]\nshape = \"torus\"\nradius = 2\nminor_radius = 0.5\n\
+         segments = {segments}\ntube_segments = {tube}\nposition = [{x}, 0, 0]\n\
+         rotation = [60, 0, 0]\ncolor = [3000]\n"
+    )
+}
+
+#[test]
+fn a_thousand_objects_are_refused_at_the_first_one_over_the_limit() {
+    use softedge_sim::scene_file::MAX_OBJECTS;
+    let mut text = format!("{HEAD}{CAMERA}");
+    for k in 0..1000 {
+        text += &torus(3, 3, f64::from(k % 5));
+    }
+    // Each table is 9 lines, after 8 lines of head and camera.
+    let line = 8 + 9 * MAX_OBJECTS + 1;
+    let field = format!("object[{MAX_OBJECTS}]");
+    expect(&text, line, &field, "more than 256 objects");
+    assert!(error_of(&text).message.contains("(1000 here)"));
+}
+
+#[test]
+fn too_many_triangles_are_refused_before_the_mesh_is_built() {
+    use softedge_sim::scene_file::MAX_TRIANGLES;
+    // 1024 x 64 tori: 131 072 triangles each, four reach the limit of
+    // 524 288 exactly, the fifth passes it.
+    let mut text = format!("{HEAD}{CAMERA}");
+    for k in 0..5 {
+        text += &torus(1024, 64, f64::from(k));
+    }
+    let d = error_of(&text);
+    assert_eq!(d.field, "object[4]", "{d}");
+    assert_eq!(d.line, 8 + 9 * 4 + 1, "{d}");
+    assert!(d.message.contains(&MAX_TRIANGLES.to_string()), "{d}");
+    assert!(d.message.contains("655360"), "{d}");
+}
+
+#[test]
+fn weiler_atherton_capacity_names_the_object_and_the_limit_in_words() {
+    // Three spheres of 16 384 triangles: about 8 000 face the camera each,
+    // so more than the 8 192 depth triangles hsr = "weiler-atherton" takes.
+    let mut text = format!("{HEAD}[render]\nhsr = \"weiler-atherton\"\n{CAMERA}");
+    for k in 0..3 {
+        text += &format!(
+            "[[object]]\nshape = \"sphere\"\nradius = 2\nsegments = 128\n\
+             position = [{k}, 0, 0]\ncolor = [3000]\n"
+        );
+    }
+    let d = error_of(&text);
+    println!("{d}");
+    assert_eq!(d.field, "object[1]", "{d}");
+    assert!(d.message.contains("at most 8192 triangles"), "{d}");
+    assert!(!d.message.contains("Capacity"), "{d}");
+    // Fewer triangles than that, but more visible pieces than the 4 096
+    // the simulator stores: named at the object being clipped, in words.
+    let text = format!(
+        "{HEAD}[render]\nhsr = \"weiler-atherton\"\n{CAMERA}\
+         [[object]]\nshape = \"sphere\"\nradius = 2\nsegments = 120\ncolor = [3000]\n"
+    );
+    let d = error_of(&text);
+    println!("{d}");
+    assert!(d.field.starts_with("object["), "{d}");
+    assert!(d.message.contains("4096 visible pieces"), "{d}");
+    assert!(!d.message.contains("Capacity"), "{d}");
+    assert!(d.line > 1, "{d}");
+}
+
+#[test]
+fn render_scale_is_bounded_by_the_image_size() {
+    let dir = std::env::temp_dir().join(format!("softedge-scale-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("big.toml");
+    std::fs::write(
+        &scene,
+        "[display]\nwidth = 2048\nheight = 2048\nformat = \"rgb888\"\n",
+    )
+    .unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_softedge-sim"))
+        .args(["render", scene.to_str().unwrap(), "--scale", "64", "-o"])
+        .arg(dir.join("out.png"))
+        .output()
+        .unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("131072x131072"), "{err}");
+    assert!(err.contains("--scale 4 or less"), "{err}");
+    assert!(!err.contains("memory allocation"), "{err}");
 }

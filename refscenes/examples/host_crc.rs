@@ -3,12 +3,12 @@
 //!
 //! `cargo run -p softedge-refscenes --example host_crc`
 
-use softedge_refscenes::{render_crc, Buffers, ACC_LEN, COVER_LEN, DEPTH_LEN, SCENES};
+use softedge_refscenes::{render_crc, Buffers, ACC_LEN, COVERED_LEN, COVER_LEN, DEPTH_LEN, SCENES};
 
 fn main() {
     let mut acc = vec![0i32; ACC_LEN];
     let mut cover = vec![0i32; COVER_LEN];
-    let (mut depth, mut covered) = (vec![0u16; DEPTH_LEN], vec![0u16; DEPTH_LEN]);
+    let (mut depth, mut covered) = (vec![0u16; DEPTH_LEN], vec![0u16; COVERED_LEN]);
     let mut bufs = Buffers {
         acc: &mut acc,
         cover: &mut cover,

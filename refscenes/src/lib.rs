@@ -8,9 +8,9 @@
 //! Cortex-M3 are the bit-identity check of `DESIGN.md`.
 //!
 //! ```
-//! use softedge_refscenes::{render_crc, Buffers, ACC_LEN, COVER_LEN, DEPTH_LEN, SCENES};
+//! use softedge_refscenes::{render_crc, Buffers, ACC_LEN, COVERED_LEN, COVER_LEN, DEPTH_LEN, SCENES};
 //! let (mut acc, mut cover) = ([0i32; ACC_LEN], [0i32; COVER_LEN]);
-//! let (mut depth, mut covered) = ([0u16; DEPTH_LEN], [0u16; DEPTH_LEN]);
+//! let (mut depth, mut covered) = ([0u16; DEPTH_LEN], [0u16; COVERED_LEN]);
 //! let mut bufs = Buffers { acc: &mut acc, cover: &mut cover, depth: &mut depth, covered: &mut covered };
 //! for scene in SCENES {
 //!     let crc = render_crc(scene, &mut bufs).unwrap();
@@ -22,7 +22,7 @@
 //! `BandBuffer::<C>::acc_len(width, band_rows)` and
 //! `BandBuffer::<C>::cover_len(width, band_rows)` `i32`s, and a scene with
 //! the z-buffer `DepthBuffer::len(width, band_rows)` `u16`s twice;
-//! [`ACC_LEN`], [`COVER_LEN`] and [`DEPTH_LEN`] are the largest over
+//! [`ACC_LEN`], [`COVER_LEN`], [`DEPTH_LEN`] and [`COVERED_LEN`] are the largest over
 //! [`SCENES`], so a firmware sizes its static buffers with them once.
 #![no_std]
 #![forbid(unsafe_code)]
@@ -56,9 +56,12 @@ pub const SCENES: &[&Scene] = &[
 pub const ACC_LEN: usize = max_len(SCENES, Need::Acc);
 /// `i32`s of `cover` that every scene of [`SCENES`] fits in.
 pub const COVER_LEN: usize = max_len(SCENES, Need::Cover);
-/// `u16`s of each of `depth` and `covered` that every scene of [`SCENES`]
-/// fits in (at least 1).
+/// `u16`s of `depth` that every scene of [`SCENES`] fits in (at least 1).
 pub const DEPTH_LEN: usize = max_len(SCENES, Need::Depth);
+/// `u16`s of `covered` that every scene of [`SCENES`] fits in: two per
+/// pixel of `depth` (coverage count and sample mask,
+/// `softedge::hsr::DepthBuffer::covered_len`).
+pub const COVERED_LEN: usize = 2 * DEPTH_LEN;
 
 #[derive(Clone, Copy)]
 enum Need {
@@ -95,7 +98,7 @@ pub struct Buffers<'a> {
     pub cover: &'a mut [i32],
     /// The z-buffer's depths (scenes with [`Scene::zbuffer`]).
     pub depth: &'a mut [u16],
-    /// The z-buffer's coverage counts.
+    /// The z-buffer's coverage counts and sample masks.
     pub covered: &'a mut [u16],
 }
 
@@ -415,7 +418,7 @@ mod tests {
         const BIG: usize = 3 * 128 * 64;
         let mut acc = [0i32; BIG];
         let mut cover = [0i32; 130 * 64];
-        let (mut depth, mut covered) = ([0u16; 128 * 64], [0u16; 128 * 64]);
+        let (mut depth, mut covered) = ([0u16; 128 * 64], [0u16; 2 * 128 * 64]);
         f(&mut Buffers {
             acc: &mut acc,
             cover: &mut cover,
@@ -427,7 +430,7 @@ mod tests {
     #[test]
     fn every_scene_renders_and_fits_the_shared_buffers() {
         let (mut acc, mut cover) = ([0i32; ACC_LEN], [0i32; COVER_LEN]);
-        let (mut depth, mut covered) = ([0u16; DEPTH_LEN], [0u16; DEPTH_LEN]);
+        let (mut depth, mut covered) = ([0u16; DEPTH_LEN], [0u16; COVERED_LEN]);
         let mut bufs = Buffers {
             acc: &mut acc,
             cover: &mut cover,

@@ -43,7 +43,7 @@ fn render_z_with<const C: usize>(
     let mut acc = vec![0i32; BandBuffer::<C>::acc_len(width, rows)];
     let mut cover = vec![0i32; BandBuffer::<C>::cover_len(width, rows)];
     let mut zd = vec![0u16; DepthBuffer::len(width, rows)];
-    let mut zc = vec![0u16; DepthBuffer::len(width, rows)];
+    let mut zc = vec![0u16; DepthBuffer::covered_len(width, rows)];
     for band in Bands::new(width, height, rows) {
         let mut buf = BandBuffer::<C>::new(&mut acc, &mut cover, band).unwrap();
         let mut zbuf = DepthBuffer::new(&mut zd, &mut zc, band).unwrap();

@@ -4,6 +4,7 @@
 //! comparisons) within the bound that rounding cut vertices to 1/16 px
 //! allows; exact where the visible boundaries are the triangles' own edges.
 
+use softedge::geom::FinePoint;
 use softedge::hsr::{DepthTriangle, HsrError, VisiblePiece, VisibleSet, PIECE_VERTICES};
 use softedge::{BandBuffer, CoordError, DrawError, Polygon, PolygonColors, RenderStyle, SubPoint};
 use softedge_tests::exact::{
@@ -19,11 +20,18 @@ const FULL_RAW: f64 = 4095.0 * 65536.0;
 
 /// Per-pixel bound of the coverage error that rounding cut vertices gives
 /// (module doc of `softedge::hsr::weiler`): every vertex is within
-/// `sqrt(2)/32` px of its exact position, so a boundary moves by at most
-/// that; a pixel holds at most `sqrt(2)` px of one straight boundary, and
-/// the test scenes' pixels hold at most `K` boundaries that moved.
+/// `sqrt(2)/2048` px of its exact position (the fine grid, 1/1024 px), so
+/// a boundary moves by at most that; a pixel holds at most `sqrt(2)` px of
+/// one straight boundary, and the test scenes' pixels hold at most `K`
+/// boundaries that moved.
 fn rounding_bound(boundaries: f64) -> f64 {
-    boundaries * 2f64.sqrt() / 32.0 * 2f64.sqrt()
+    boundaries * 2f64.sqrt() / 2048.0 * 2f64.sqrt()
+}
+
+/// A piece vertex (1/1024 px) to the nearest 1/16 px, for counting the
+/// edges near a pixel.
+fn to_sub(p: &FinePoint) -> SubPoint {
+    SubPoint::new((p.x + 32).div_euclid(64), (p.y + 32).div_euclid(64))
 }
 
 /// The edge engine's own per-pixel coverage error (SPEC §2 exact mode),
@@ -203,7 +211,10 @@ fn edges_per_pixel(outlines: &[Vec<SubPoint>], w: i32, h: i32) -> Vec<usize> {
 }
 
 fn piece_outlines(pieces: &[VisiblePiece]) -> Vec<Vec<SubPoint>> {
-    pieces.iter().map(|p| p.vertices().to_vec()).collect()
+    pieces
+        .iter()
+        .map(|p| p.vertices().iter().map(to_sub).collect())
+        .collect()
 }
 
 fn tri_outlines(tris: &[DepthTriangle<1>]) -> Vec<Vec<SubPoint>> {
@@ -593,7 +604,10 @@ fn constant_depth_scenes_against_the_exact_visible_area() {
         let set = compute::<256>(&tris);
         // Cut vertices: every piece vertex that is not a triangle vertex;
         // the piece edges they end move with them.
-        let originals: Vec<SubPoint> = tris.iter().flat_map(|t| t.vertices).collect();
+        let originals: Vec<FinePoint> = tris
+            .iter()
+            .flat_map(|t| t.vertices.map(FinePoint::from))
+            .collect();
         let moved: Vec<Vec<SubPoint>> = set
             .pieces()
             .iter()
@@ -604,6 +618,7 @@ fn constant_depth_scenes_against_the_exact_visible_area() {
                     .collect::<Vec<_>>()
             })
             .filter(|e| e.iter().any(|v| !originals.contains(v)))
+            .map(|e| e.iter().map(to_sub).collect())
             .collect();
         let near_moved = edges_per_pixel(&moved, w, h);
         for k in 0..tris.len() {

@@ -30,7 +30,8 @@ pub use out::Line;
 /// `bufs` are the board's band buffers, sized
 /// [`ACC_LEN`](softedge_refscenes::ACC_LEN),
 /// [`COVER_LEN`](softedge_refscenes::COVER_LEN) and
-/// [`DEPTH_LEN`](softedge_refscenes::DEPTH_LEN). `counter` is the
+/// [`DEPTH_LEN`](softedge_refscenes::DEPTH_LEN) and
+/// [`COVERED_LEN`](softedge_refscenes::COVERED_LEN). `counter` is the
 /// instruction counter, already started.
 pub fn run(bufs: &mut Buffers<'_>, counter: &insns::Counter) -> ! {
     let mut ok = true;

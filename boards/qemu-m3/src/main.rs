@@ -6,7 +6,7 @@
 
 use cortex_m_rt::{entry, exception};
 use softedge_board_common as fw;
-use softedge_refscenes::{Buffers, ACC_LEN, COVER_LEN, DEPTH_LEN};
+use softedge_refscenes::{Buffers, ACC_LEN, COVERED_LEN, COVER_LEN, DEPTH_LEN};
 
 #[entry]
 fn main() -> ! {
@@ -14,7 +14,7 @@ fn main() -> ! {
     static mut ACC: [i32; ACC_LEN] = [0; ACC_LEN];
     static mut COVER: [i32; COVER_LEN] = [0; COVER_LEN];
     static mut DEPTH: [u16; DEPTH_LEN] = [0; DEPTH_LEN];
-    static mut COVERED: [u16; DEPTH_LEN] = [0; DEPTH_LEN];
+    static mut COVERED: [u16; COVERED_LEN] = [0; COVERED_LEN];
     fw::stack::paint();
     let Some(core) = cortex_m::Peripherals::take() else {
         fw::exit(false)

@@ -5,8 +5,9 @@
 //! `sum(S_k * I_k)` with `sum(S_k)` its covered area).
 //!
 //! Takes the frame's [`DepthTriangle`]s once per frame
-//! ([`VisibleSet::compute`]); gives [`VisiblePiece`]s, each a polygon in
-//! 1/16 px that remembers its source triangle; every band then draws every
+//! ([`VisibleSet::compute`]); gives [`VisiblePiece`]s, each a polygon on
+//! the fine grid ([`FinePoint`], 1/1024 px) that remembers its source
+//! triangle; every band then draws every
 //! piece with its source triangle's Gouraud plane ([`VisibleSet::draw`]),
 //! so a triangle's colours do not change where it is cut, and the frame
 //! does not depend on the band height (the pieces are a function of the
@@ -57,8 +58,14 @@
 //! positive), so that a mesh's shared edge is one line for both triangles.
 //! A cut vertex is the intersection of two clip lines, computed from the
 //! two lines alone (never from the piece being clipped) and rounded to the
-//! nearest 1/16 px: every piece that has it gets the same `SubPoint`, and
-//! step 3 puts it on both sides of its line.
+//! nearest 1/1024 px (the fine grid of [`geom`](crate::geom); the
+//! triangles' own vertices lie on it exactly): every piece that has it gets
+//! the same [`FinePoint`], and step 3 puts it on both sides of its line.
+//! The band draws pieces with exact box coverage of those vertices
+//! (`hsr::fine_fill`: edges between two 1/16-px points by the edge walker,
+//! the others by exact areas per cell); other pixel models and aliased
+//! drawing take the vertices rounded to 1/16 px (the error of issue #18's
+//! measurement below, before the fine grid).
 //!
 //! ## Remaining error
 //!
@@ -68,20 +75,28 @@
 //!   interpenetrating meshes of 530 triangles cover their overlap exactly).
 //! - Where the boundary between two *different* surfaces (or a surface and
 //!   the background) ends in a cut vertex, that vertex is rounded: within
-//!   1/32 px of the true point per axis, `sqrt(2)/32 ≈ 0.044` px. The piece
-//!   edges ending there tilt by that much at the vertex, tapering to zero
-//!   at their other end, so a pixel's share of a surface changes by at most
-//!   `0.044` px times the length of such edges inside the pixel
-//!   (`≤ sqrt(2)`): **at most 1/16 of a pixel per moved edge**, times the
-//!   colour step between the two surfaces. Every other pixel is exact to
+//!   1/2048 px of the true point per axis, `sqrt(2)/2048 ≈ 0.0007` px. The
+//!   piece edges ending there tilt by that much at the vertex, tapering to
+//!   zero at their other end, so a pixel's share of a surface changes by at
+//!   most `0.0007` px times the length of such edges inside the pixel
+//!   (`≤ sqrt(2)`): **at most 1/1024 of a pixel per moved edge** (4 levels
+//!   of 4095), times the colour step between the two surfaces; the fine
+//!   cells add at most 1/8192 px per edge. Every other pixel is exact to
 //!   the engine's 1/256: the triangles' own vertices and the parts of their
 //!   edges not ending in a cut vertex are never moved. Measured on random
-//!   scenes of constant-depth triangles against the exact visible area:
-//!   max 0.042 px, mean 0.00015 px, 99 % of pixels within 1/256, and
-//!   within 0.0005 px wherever no moved edge passes.
+//!   scenes of constant-depth triangles against the exact visible area
+//!   (`tests/tests/weiler.rs`): max 0.00064 px (it was 0.042 px with cut
+//!   vertices on the 1/16-px grid), and on random flat convex polygons at
+//!   constant depths with random colours (`tests/tests/hsr_exact.rs`): worst
+//!   pixel 2.4 levels of 4095 from the exact visible area (94.6 before),
+//!   against the goal of `4095 / 256 + 1 = 17`.
 //! - A visible part thinner than the rounding (a sliver between two nearly
 //!   parallel lines) may round to zero area and is dropped; its area is
 //!   within the bound above.
+//! - With another pixel model than [`PixelModel::Box`], or aliased, the
+//!   pieces are drawn with their vertices rounded to 1/16 px (those walks
+//!   take no finer vertices yet): within 1/32 px per axis, at most 1/16 of
+//!   a pixel per moved edge.
 //! - Depth lines are kept to `|a|, |b| < 2^24` (see below): the line then
 //!   differs from the exact intersection by under 1/2048 px in the
 //!   coordinate range. Where three depth lines meet (three mutually
@@ -90,7 +105,8 @@
 //!
 //! ## Integer ranges
 //!
-//! Coordinates are `|x|, |y| <= 2^15` ([`geom`](crate::geom)), depths
+//! Triangle coordinates are `|x|, |y| <= 2^15` sub-pixels
+//! ([`geom`](crate::geom)), piece vertices `<= 2^21` fine units, depths
 //! `< 2^16`. A triangle's depth plane `z = (A x + B y + C) / D` has
 //! `|D|, |A|, |B| < 2^34`, `|C| < 2^51`; the depth difference of a pair,
 //! scaled by `D_P D_Q`, has coefficients below `2^86` in `i128`. It is
@@ -99,7 +115,10 @@
 //! vertices, so the line passes through the coordinate box and
 //! `|c| < 2^41`. Edge lines have `|a|, |b| <= 2^16`, `|c| <= 2^32`. Line
 //! intersections then need `|a1 b2 - a2 b1| < 2^49` and numerators
-//! `< 2^66` (`i128`); line values at a vertex are `< 2^42`.
+//! `< 2^72` with the fine grid's factor 64 (`i128`); line values at a
+//! fine vertex (`a x + b y + 64 c`) are `< 2^48`; the exact corners of a
+//! hiding region have numerators below `2^64`, so the separating-axis
+//! test's products stay below `2^90`.
 //!
 //! ## Storage
 //!
@@ -140,12 +159,21 @@
 
 use heapless::Vec;
 
+use super::fine_fill::{area2_fine, fill_fine};
 use super::{DepthTriangle, HsrError};
 use crate::band::BandBuffer;
-use crate::geom::SubPoint;
-use crate::raster::{fill, DrawError, RenderStyle};
+use crate::geom::{FinePoint, SubPoint, FINE_BITS};
+use crate::raster::{fill, DrawError, PixelModel, RenderStyle};
 use crate::shade::Plane;
 use crate::SUB_BITS;
+
+/// Fine units per sub-pixel unit: `1024 / 16`.
+const FINE_PER_SUB: i32 = 1 << (FINE_BITS - SUB_BITS);
+
+/// A triangle vertex on the fine grid (exact).
+fn fine(p: SubPoint) -> FinePoint {
+    FinePoint::from(p)
+}
 
 /// Most vertices a [`VisiblePiece`] holds.
 ///
@@ -168,16 +196,18 @@ struct ClipLine {
 }
 
 impl ClipLine {
-    /// The line's value at `p` (`< 2^42` in magnitude, see the module doc).
-    fn at(&self, p: SubPoint) -> i128 {
+    /// The line's value at the fine point `p`, scaled to fine units: 64
+    /// times its value in sub-pixel units (`< 2^48` in magnitude, see the
+    /// module doc), so its sign is the side of `p`.
+    fn at(&self, p: FinePoint) -> i128 {
         i128::from(self.a) * i128::from(p.x)
             + i128::from(self.b) * i128::from(p.y)
-            + i128::from(self.c)
+            + i128::from(self.c) * i128::from(FINE_PER_SUB)
     }
 
     /// Position along the line (the direction `(-b, a)`), for sorting the
     /// vertices on it.
-    fn along(&self, p: SubPoint) -> i128 {
+    fn along(&self, p: FinePoint) -> i128 {
         i128::from(self.a) * i128::from(p.y) - i128::from(self.b) * i128::from(p.x)
     }
 
@@ -218,10 +248,10 @@ impl ClipLine {
         Self::canonical(-dy, dx, dy * i128::from(p.x) - dx * i128::from(p.y))
     }
 
-    /// The intersection with `other`, rounded to the nearest 1/16 px
-    /// (halves away from zero); `None` for parallel lines. A function of
-    /// the two lines alone, symmetric in them.
-    fn meet(&self, other: &Self) -> Option<SubPoint> {
+    /// The intersection with `other`, rounded to the nearest 1/1024 px
+    /// (the fine grid; halves away from zero); `None` for parallel lines.
+    /// A function of the two lines alone, symmetric in them.
+    fn meet(&self, other: &Self) -> Option<FinePoint> {
         let (a1, b1, c1) = (i128::from(self.a), i128::from(self.b), i128::from(self.c));
         let (a2, b2, c2) = (
             i128::from(other.a),
@@ -232,9 +262,10 @@ impl ClipLine {
         if den == 0 {
             return None;
         }
-        let x = div_round(b1 * c2 - b2 * c1, den);
-        let y = div_round(c1 * a2 - c2 * a1, den);
-        Some(SubPoint::new(
+        let scale = i128::from(FINE_PER_SUB);
+        let x = div_round(scale * (b1 * c2 - b2 * c1), den);
+        let y = div_round(scale * (c1 * a2 - c2 * a1), den);
+        Some(FinePoint::new(
             i32::try_from(x.clamp(i128::from(i32::MIN), i128::from(i32::MAX))).ok()?,
             i32::try_from(y.clamp(i128::from(i32::MIN), i128::from(i32::MAX))).ok()?,
         ))
@@ -261,6 +292,18 @@ fn div_round(n: i128, d: i128) -> i128 {
     }
 }
 
+/// A fine coordinate rounded to the nearest 1/16 px (halves away from
+/// zero).
+fn round_to_sub(v: i32) -> i32 {
+    let half = FINE_PER_SUB / 2;
+    let q = (v.unsigned_abs() + half as u32) / FINE_PER_SUB as u32;
+    if v < 0 {
+        -(q as i32)
+    } else {
+        q as i32
+    }
+}
+
 fn gcd(mut a: u128, mut b: u128) -> u128 {
     while let Some(r) = a.checked_rem(b) {
         (a, b) = (b, r);
@@ -273,7 +316,7 @@ fn gcd(mut a: u128, mut b: u128) -> u128 {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 struct Poly<const V: usize> {
-    vertices: [SubPoint; V],
+    vertices: [FinePoint; V],
     /// `lines[k]`: the clip line (index into the set's table, or
     /// [`DIAGONAL`]) that the edge from vertex `k` to vertex `k + 1` lies on.
     lines: [u16; V],
@@ -294,7 +337,7 @@ type Outline = Poly<WORK_VERTICES>;
 
 impl<const V: usize> Poly<V> {
     const EMPTY: Self = Self {
-        vertices: [SubPoint::new(0, 0); V],
+        vertices: [FinePoint::new(0, 0); V],
         lines: [0; V],
         source: 0,
         len: 0,
@@ -307,11 +350,11 @@ impl<const V: usize> Poly<V> {
         }
     }
 
-    fn vertices(&self) -> &[SubPoint] {
+    fn vertices(&self) -> &[FinePoint] {
         self.vertices.get(..usize::from(self.len)).unwrap_or(&[])
     }
 
-    fn push(&mut self, v: SubPoint, line: u16) -> Result<(), HsrError> {
+    fn push(&mut self, v: FinePoint, line: u16) -> Result<(), HsrError> {
         let k = usize::from(self.len);
         match (self.vertices.get_mut(k), self.lines.get_mut(k)) {
             (Some(pv), Some(pl)) => {
@@ -325,7 +368,7 @@ impl<const V: usize> Poly<V> {
     }
 
     /// Vertex `k` (cyclic) and the line of the edge leaving it.
-    fn at(&self, k: usize) -> (SubPoint, u16) {
+    fn at(&self, k: usize) -> (FinePoint, u16) {
         let n = usize::from(self.len).max(1);
         let k = k.checked_rem(n).unwrap_or(0);
         (
@@ -358,7 +401,7 @@ impl<const V: usize> Poly<V> {
             }
         }
         *self = out;
-        self.len >= 3 && crate::geom::area2(self.vertices()) != 0
+        self.len >= 3 && area2_fine(self.vertices()) != 0
     }
 
     fn bbox(&self) -> [i32; 4] {
@@ -376,7 +419,7 @@ impl Outline {
         let too_long = HsrError::Capacity {
             needed: PIECE_VERTICES + 1,
         };
-        let sign = crate::geom::area2(self.vertices()).signum();
+        let sign = area2_fine(self.vertices()).signum();
         let mut out: Vec<VisiblePiece, 3> = Vec::new();
         let mut rest = *self;
         while usize::from(rest.len) > PIECE_VERTICES {
@@ -385,7 +428,7 @@ impl Outline {
             let mut found = None;
             for r in 0..n {
                 let (head, tail) = rest.cut_off(r)?;
-                let same = |p: &[SubPoint]| crate::geom::area2(p).signum() == sign;
+                let same = |p: &[FinePoint]| area2_fine(p).signum() == sign;
                 if same(head.vertices()) && same(tail.vertices()) {
                     found = Some((head, tail));
                     break;
@@ -424,8 +467,9 @@ impl Outline {
 }
 
 /// One disjoint visible polygon: a convex part of its source triangle
-/// (plus the cut vertices of its neighbours on its edges), vertices in
-/// 1/16 px.
+/// (plus the cut vertices of its neighbours on its edges), vertices on the
+/// fine grid (1/1024 px: the triangles' own vertices exactly, cut vertices
+/// rounded).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct VisiblePiece(Poly<PIECE_VERTICES>);
@@ -437,15 +481,16 @@ impl VisiblePiece {
         usize::from(self.0.source)
     }
 
-    /// The outline (at least 3 vertices, non-zero area), in 1/16 px.
-    pub fn vertices(&self) -> &[SubPoint] {
+    /// The outline (at least 3 vertices, non-zero area), in 1/1024 px.
+    pub fn vertices(&self) -> &[FinePoint] {
         self.0.vertices()
     }
 }
 
-fn bbox(v: &[SubPoint]) -> [i32; 4] {
+fn bbox<P: Copy + Into<FinePoint>>(v: &[P]) -> [i32; 4] {
     let mut b = [i32::MAX, i32::MAX, i32::MIN, i32::MIN];
-    for p in v {
+    for &p in v {
+        let p: FinePoint = p.into();
         b = [b[0].min(p.x), b[1].min(p.y), b[2].max(p.x), b[3].max(p.y)];
     }
     b
@@ -478,7 +523,7 @@ fn hider_corners(q: &[SubPoint; 3], depth: Option<&Cut>) -> Vec<RatPoint, 4> {
     };
     for k in 0..3 {
         let (v, w) = (q[k], q[(k + 1) % 3]);
-        let (fv, fw) = (cut.value(v), cut.value(w));
+        let (fv, fw) = (cut.value(fine(v)), cut.value(fine(w)));
         if fv >= 0 {
             let _ = out.push(int(v));
         }
@@ -510,17 +555,19 @@ fn separated<const V: usize>(x: &Poly<V>, corners: &[RatPoint], cuts: &[Cut]) ->
     {
         return true;
     }
-    let s = crate::geom::area2(x.vertices()).signum();
+    let s = area2_fine(x.vertices()).signum();
     let v = x.vertices();
-    (0..v.len()).any(|k| {
-        let (p, q) = (x.at(k).0, x.at(k + 1).0);
+    // Corners are in sub-pixel units over `d`; the piece in fine units.
+    let k = i128::from(FINE_PER_SUB);
+    (0..v.len()).any(|j| {
+        let (p, q) = (x.at(j).0, x.at(j + 1).0);
         let (ex, ey) = (
             i128::from(q.x) - i128::from(p.x),
             i128::from(q.y) - i128::from(p.y),
         );
         corners.iter().all(|r| {
-            let c = ex * (r.y - i128::from(p.y) * r.d) - ey * (r.x - i128::from(p.x) * r.d);
-            i128::from(s) * c <= 0
+            let c = ex * (k * r.y - i128::from(p.y) * r.d) - ey * (k * r.x - i128::from(p.x) * r.d);
+            s * c <= 0
         })
     })
 }
@@ -576,6 +623,8 @@ pub struct WeilerStats {
 pub struct VisibleSet<const N: usize> {
     pieces: Vec<VisiblePiece, N>,
     lines: Vec<ClipLine, N>,
+    /// The triangle being clipped when the last `compute` failed.
+    failed_at: Option<usize>,
 }
 
 impl<const N: usize> Default for VisibleSet<N> {
@@ -594,7 +643,7 @@ struct Cut {
 }
 
 impl Cut {
-    fn value(&self, p: SubPoint) -> i128 {
+    fn value(&self, p: FinePoint) -> i128 {
         i128::from(self.side) * self.line.at(p)
     }
 }
@@ -734,7 +783,17 @@ impl<const N: usize> VisibleSet<N> {
         Self {
             pieces: Vec::new(),
             lines: Vec::new(),
+            failed_at: None,
         }
+    }
+
+    /// After a failed [`compute`](Self::compute): the index of the
+    /// triangle whose clipping (or, for the conforming step, whose pieces)
+    /// ran out of storage or was rejected, so a caller can say which of its
+    /// objects the frame failed at; `None` after a success, or when the
+    /// input was refused before any triangle (more than `u16::MAX`).
+    pub fn failed_at(&self) -> Option<usize> {
+        self.failed_at
     }
 
     /// The visible pieces of the last [`compute`](Self::compute).
@@ -756,10 +815,13 @@ impl<const N: usize> VisibleSet<N> {
         &mut self,
         tris: &[DepthTriangle<C>],
     ) -> Result<WeilerStats, HsrError> {
+        self.failed_at = None;
         let r = self.compute_inner(tris);
         if r.is_err() {
             self.pieces.clear();
             self.lines.clear();
+        } else {
+            self.failed_at = None;
         }
         r
     }
@@ -773,11 +835,13 @@ impl<const N: usize> VisibleSet<N> {
         if tris.len() > usize::from(u16::MAX) {
             return Err(HsrError::Capacity { needed: tris.len() });
         }
-        for t in tris {
+        for (p, t) in tris.iter().enumerate() {
+            self.failed_at = Some(p);
             setup(t)?;
         }
         let mut stats = WeilerStats::default();
         for (p, tp) in tris.iter().enumerate() {
+            self.failed_at = Some(p);
             let Some(tp) = setup(tp)? else { continue };
             let start = self.pieces.len();
             let mut first = Poly::<PIECE_VERTICES>::with_source(p as u16);
@@ -788,7 +852,7 @@ impl<const N: usize> VisibleSet<N> {
                     continue;
                 };
                 let index = self.intern(line)?;
-                first.push(a, index)?;
+                first.push(fine(a), index)?;
             }
             self.push_piece(VisiblePiece(first))?;
             for (q, tq) in tris.iter().enumerate() {
@@ -828,6 +892,7 @@ impl<const N: usize> VisibleSet<N> {
                     });
                 }
                 let corners = hider_corners(&tq.v, depth_cut.as_ref());
+                // Boxes are in fine units.
                 if self.subtract(start, tq.bbox, &corners, &mut cuts)? {
                     stats.occlusions += 1;
                 }
@@ -994,15 +1059,15 @@ impl<const N: usize> VisibleSet<N> {
     /// a nearly parallel pair's intersection far off).
     fn crossing(
         &self,
-        v: SubPoint,
-        w: SubPoint,
+        v: FinePoint,
+        w: FinePoint,
         e: u16,
         cut: &Cut,
         fv: i128,
         fw: i128,
-    ) -> SubPoint {
+    ) -> FinePoint {
         let b = bbox(&[v, w]);
-        let clamp = |p: SubPoint| SubPoint::new(p.x.clamp(b[0], b[2]), p.y.clamp(b[1], b[3]));
+        let clamp = |p: FinePoint| FinePoint::new(p.x.clamp(b[0], b[2]), p.y.clamp(b[1], b[3]));
         if let Some(p) = self.line(e).and_then(|l| l.meet(&cut.line)) {
             return clamp(p);
         }
@@ -1021,7 +1086,7 @@ impl<const N: usize> VisibleSet<N> {
         };
         let x = i32::try_from(t(p0.x, p1.x)).unwrap_or(p0.x);
         let y = i32::try_from(t(p0.y, p1.y)).unwrap_or(p0.y);
-        clamp(SubPoint::new(x, y))
+        clamp(FinePoint::new(x, y))
     }
 
     /// Step 3: inserts into every piece edge the vertices of all pieces
@@ -1036,6 +1101,7 @@ impl<const N: usize> VisibleSet<N> {
                 break;
             };
             let x = x.0;
+            self.failed_at = Some(usize::from(x.source));
             let mut out = Outline::with_source(x.source);
             for k in 0..usize::from(x.len) {
                 let (p, e) = x.at(k);
@@ -1044,7 +1110,7 @@ impl<const N: usize> VisibleSet<N> {
                 let Some(line) = self.line(e) else {
                     continue;
                 };
-                let key = |v: SubPoint| (line.along(v), v.x, v.y);
+                let key = |v: FinePoint| (line.along(v), v.x, v.y);
                 let (kp, kq) = (key(p), key(q));
                 let forward = kp < kq;
                 let (lo, hi) = if forward { (kp, kq) } else { (kq, kp) };
@@ -1053,7 +1119,7 @@ impl<const N: usize> VisibleSet<N> {
                 // taking the nearest one after the last inserted.
                 let mut last = if forward { lo } else { hi };
                 loop {
-                    let mut best: Option<((i128, i32, i32), SubPoint)> = None;
+                    let mut best: Option<((i128, i32, i32), FinePoint)> = None;
                     for y in self.pieces.iter() {
                         let y = &y.0;
                         for j in 0..usize::from(y.len) {
@@ -1124,12 +1190,14 @@ impl<const N: usize> VisibleSet<N> {
     ) -> Result<(), HsrError> {
         let info = band.band();
         let (y0, y1) = (info.y0, info.y0 + i32::from(info.rows));
+        // Exact box coverage takes the fine vertices as they are.
+        let exact = style.antialias && style.model == PixelModel::Box;
         for piece in &self.pieces {
             let b = piece.0.bbox();
             // Two pixels of margin: the circular pixel models reach 1.5 px
             // beyond a pixel (the edge engine clips to the band itself;
             // this only skips pieces that cannot touch it).
-            if (b[3] >> SUB_BITS) + 2 < y0 || (b[1] >> SUB_BITS) - 2 > y1 {
+            if (b[3] >> FINE_BITS) + 2 < y0 || (b[1] >> FINE_BITS) - 2 > y1 {
                 continue;
             }
             let t = tris.get(piece.source()).ok_or(HsrError::Capacity {
@@ -1139,13 +1207,23 @@ impl<const N: usize> VisibleSet<N> {
                 continue;
             };
             let add = crate::band::ComposeOp::Add(crate::style::Opacity::OPAQUE);
-            fill(
-                band,
-                piece.vertices(),
-                &crate::band::Paint::Plane(&plane),
-                add,
-                style,
-            );
+            if exact {
+                fill_fine(band, piece.vertices(), &plane);
+            } else {
+                // Other pixel models take 1/16-px vertices: the cut
+                // vertices rounded there (module doc, Remaining error).
+                let mut sub = [SubPoint::new(0, 0); PIECE_VERTICES];
+                for (s, v) in sub.iter_mut().zip(piece.vertices()) {
+                    *s = SubPoint::new(round_to_sub(v.x), round_to_sub(v.y));
+                }
+                fill(
+                    band,
+                    sub.get(..piece.vertices().len()).unwrap_or(&[]),
+                    &crate::band::Paint::Plane(&plane),
+                    add,
+                    style,
+                );
+            }
         }
         Ok(())
     }

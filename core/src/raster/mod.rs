@@ -436,26 +436,23 @@ impl<const C: usize> Line<C> {
     /// triangles do not know the band's background), so its energy may
     /// differ from length times colour by the rounding of its corners to
     /// 1/16 px (a few per cent at some angles).
+    ///
+    /// A line on or near the coordinate limit has rectangle corners up to
+    /// half a pixel beyond it: the rectangle is then clipped to the range
+    /// (cut points on the limit lines, so no pixel of a frame moves but
+    /// those at the limit itself, by at most 1/64 px; `hsr::range_clip`),
+    /// so every hidden-surface method takes it.
     pub fn depth_triangles(
         &self,
         depths: [u16; 2],
-        mut emit: impl FnMut(crate::hsr::DepthTriangle<C>),
+        emit: impl FnMut(crate::hsr::DepthTriangle<C>),
     ) -> Result<(), DrawError> {
         let Some((q, _, _)) = self.rectangle()? else {
             return Ok(());
         };
         let [c0, c1] = self.colors;
         let [z0, z1] = depths;
-        emit(crate::hsr::DepthTriangle::new(
-            [q[0], q[1], q[2]],
-            [c0, c1, c1],
-            [z0, z1, z1],
-        ));
-        emit(crate::hsr::DepthTriangle::new(
-            [q[0], q[2], q[3]],
-            [c0, c1, c0],
-            [z0, z1, z0],
-        ));
+        crate::hsr::quad_depth_triangles(q, [c0, c1, c1, c0], [z0, z1, z1, z0], emit);
         Ok(())
     }
 

@@ -104,12 +104,33 @@ impl Bayer8 {
         lin12_index(lin12) >= usize::from(t)
     }
 
-    /// Dithers frame row `y`, pixels from `x0` on: `out[k]` for `row[k]`.
-    /// Returns the number of pixels written (the shorter slice).
+    /// Dithers frame row `y`, pixels from `x0` on: `out[k]` for `row[k]`,
+    /// the pixel at column `x0 + k` (wrapping past `i32::MAX`, where the
+    /// matrix keeps tiling: only `x mod 8` matters). Returns the number of
+    /// pixels written (the shorter slice). Every pixel is exactly
+    /// [`is_on`](Self::is_on) of its column (tested on random rows, in
+    /// release builds too).
+    ///
+    /// The loop first takes the row's eight thresholds, rotated so that
+    /// entry `k & 7` belongs to pixel `k`, and then only indexes that
+    /// array by the pixel count. (It used to zip the pixels with the column
+    /// range `x0..`: that panicked in debug builds for `x0` within a row's
+    /// length of `i32::MAX`, and rustc 1.95's x86-64 release build
+    /// vectorized it into a loop that disagreed with `is_on` on about a
+    /// quarter of a 128x64 frame's pixels — issue #18.)
     pub fn row<T: From<bool>>(&self, row: &[[u16; 1]], x0: i32, y: i32, out: &mut [T]) -> usize {
+        let base = ((y & 7) as usize) * BAYER_SIDE;
+        // Column phase of x0 (two's complement: x0 & 7 is x0 mod 8).
+        let phase = (x0 & 7) as usize;
+        let mut cells = [0u16; BAYER_SIDE];
+        for (j, c) in cells.iter_mut().enumerate() {
+            let k = base + ((phase + j) & (BAYER_SIDE - 1));
+            *c = self.thresholds.get(k).copied().unwrap_or(u16::MAX);
+        }
         let mut n = 0;
-        for ((o, &[i]), x) in out.iter_mut().zip(row).zip(x0..) {
-            *o = T::from(self.is_on(i, x, y));
+        for (o, &[i]) in out.iter_mut().zip(row) {
+            let t = cells.get(n & (BAYER_SIDE - 1)).copied().unwrap_or(u16::MAX);
+            *o = T::from(lin12_index(i) >= usize::from(t));
             n += 1;
         }
         n

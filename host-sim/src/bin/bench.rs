@@ -252,7 +252,7 @@ fn render_torus_z(mode: &str) -> u64 {
     let mut acc = vec![0i32; BandBuffer::<3>::acc_len(W, BAND_ROWS)];
     let mut cover = vec![0i32; BandBuffer::<3>::cover_len(W, BAND_ROWS)];
     let mut depth = vec![0u16; DepthBuffer::len(W, BAND_ROWS)];
-    let mut covered = vec![0u16; DepthBuffer::len(W, BAND_ROWS)];
+    let mut covered = vec![0u16; DepthBuffer::covered_len(W, BAND_ROWS)];
     let mut row = vec![[0u16; 3]; usize::from(W)];
     let mut sum = 0u64;
     for band in Bands::new(W, H, BAND_ROWS) {

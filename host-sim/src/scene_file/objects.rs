@@ -171,8 +171,22 @@ pub(super) fn objects<const C: usize>(
         }
     };
 
+    // A zero direction is only found when the first face is lit; place
+    // the error at the direction itself.
+    let light_at = file.light.as_ref().map(|l| l.get_ref().direction.span());
     for (k, o) in file.object.iter().enumerate() {
         let field = format!("object[{k}]");
+        if k == super::MAX_OBJECTS {
+            return ck.err(
+                o.span(),
+                &field,
+                format!(
+                    "more than {} objects in one scene file ({} here)",
+                    super::MAX_OBJECTS,
+                    file.object.len()
+                ),
+            );
+        }
         let or = o.get_ref();
         let shape = shape(ck, or, &field, o.span())?;
         let color = ck.color::<C>(&or.color, &format!("{field}.color"))?;
@@ -192,6 +206,8 @@ pub(super) fn objects<const C: usize>(
         let (nv, nt) = shape
             .counts()
             .or_else(|e| ck.err(o.span(), &field, describe(e)))?;
+        // Counted before anything is allocated for the mesh.
+        ck.count_triangles(nt, o.span(), &field)?;
         let mut vertices = vec![Vertex::default(); nv];
         let mut triangles = vec![[0u16; 3]; nt];
         shape
@@ -217,12 +233,11 @@ pub(super) fn objects<const C: usize>(
             faces,
             |t| prims.push(Primitive::Depth(t)),
         )
-        .or_else(|e| {
-            let at = match e {
-                SceneError::ZeroDirection => "light.direction",
-                _ => field.as_str(),
-            };
-            ck.err(o.span(), at, describe(e))
+        .or_else(|e| match (e, &light_at) {
+            (SceneError::ZeroDirection, Some(at)) => {
+                ck.err(at.clone(), "light.direction", describe(e))
+            }
+            _ => ck.err(o.span(), &field, describe(e)),
         })?;
         out.push((
             Origin {

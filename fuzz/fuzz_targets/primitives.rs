@@ -1,0 +1,89 @@
+//! Triangles, polygons and lines, with any vertices and colours, under
+//! every pixel model: no panic, and the same frame for two band heights.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use softedge::{
+    BandBuffer, DrawError, Line, PixelModel, Polygon, PolygonColors, RenderStyle, SubPoint,
+    Triangle,
+};
+use softedge_fuzz::{assert_band_invariant, Input};
+
+enum Shape {
+    Triangle(Triangle<1>),
+    Polygon(Vec<SubPoint>, Vec<[u16; 1]>, bool),
+    Line(Line<1>),
+}
+
+const MODELS: [PixelModel; 9] = [
+    PixelModel::Box,
+    PixelModel::BoxSeed,
+    PixelModel::BedOfNails4,
+    PixelModel::BedOfNails8,
+    PixelModel::Hex7,
+    PixelModel::Hex19,
+    PixelModel::Cone,
+    PixelModel::Gaussian,
+    PixelModel::Hamming,
+];
+
+/// The one use of the drawing API: the shapes, in order, into one band.
+fn draw(
+    band: &mut BandBuffer<'_, 1>,
+    shapes: &[Shape],
+    style: &RenderStyle,
+) -> Result<(), DrawError> {
+    for s in shapes {
+        // A rejected primitive is a documented result; keep drawing the
+        // others so that later ones are exercised too.
+        let _ = match s {
+            Shape::Triangle(t) => t.draw(band, style),
+            Shape::Polygon(v, c, flat) => {
+                let colors = if *flat {
+                    PolygonColors::Flat(c[0])
+                } else {
+                    PolygonColors::PerVertex(c)
+                };
+                Polygon::new(v, colors).draw(band, style)
+            }
+            Shape::Line(l) => l.draw(band, style),
+        };
+    }
+    Ok(())
+}
+
+fuzz_target!(|data: &[u8]| {
+    let mut inp = Input::new(data);
+    let (w, h) = (inp.side(96), inp.side(64));
+    let style = RenderStyle {
+        antialias: !inp.u8().is_multiple_of(5),
+        model: MODELS[usize::from(inp.u8()) % MODELS.len()],
+    };
+    let background = [inp.lin12()];
+    let (rows_a, rows_b) = (inp.side(h), inp.side(h));
+    let mut shapes = Vec::new();
+    while !inp.is_empty() && shapes.len() < 12 {
+        shapes.push(match inp.u8() % 3 {
+            0 => Shape::Triangle(Triangle::new(
+                [inp.point(w, h), inp.point(w, h), inp.point(w, h)],
+                [inp.color(), inp.color(), inp.color()],
+            )),
+            1 => {
+                let n = 1 + usize::from(inp.u8() % 70);
+                let v: Vec<SubPoint> = (0..n).map(|_| inp.point(w, h)).collect();
+                // Sometimes a wrong colour count (must be ColorCount).
+                let m = if inp.u8() == 0 { n + 1 } else { n };
+                let c: Vec<[u16; 1]> = (0..m).map(|_| inp.color()).collect();
+                Shape::Polygon(v, c, inp.bool())
+            }
+            _ => Shape::Line(Line::new(
+                inp.point(w, h),
+                inp.point(w, h),
+                [inp.color(), inp.color()],
+            )),
+        });
+    }
+    let _ = assert_band_invariant(w, h, rows_a, rows_b, background, |band, _| {
+        draw(band, &shapes, &style)
+    });
+});
