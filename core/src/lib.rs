@@ -144,6 +144,9 @@
 #![no_std]
 #![cfg_attr(docsrs, feature(doc_cfg))]
 #![forbid(unsafe_code)]
+// Without embedded-graphics there is no renderer: the band's flush and
+// pixel-store paths and the display profiles' constructors go unused.
+#![cfg_attr(not(feature = "embedded-graphics"), allow(dead_code))]
 #![deny(missing_docs)]
 // Per-channel loops index several arrays of the same length at once.
 #![allow(clippy::needless_range_loop)]
@@ -161,7 +164,7 @@ pub mod draw;
 pub mod edge;
 #[cfg(not(feature = "internals"))]
 mod edge;
-mod errors;
+mod error;
 pub mod geom;
 pub mod hsr;
 pub mod path;

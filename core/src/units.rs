@@ -16,3 +16,7 @@
 pub const COVER_ONE: i32 = 1 << COVER_BITS;
 /// `log2(COVER_ONE)`.
 pub const COVER_BITS: u32 = 16;
+
+/// Most vertices a [`Polygon`](crate::raster::Polygon) may have (seed
+/// 000's primitives; paths and shapes have no such limit).
+pub const MAX_POLYGON_VERTICES: usize = 64;

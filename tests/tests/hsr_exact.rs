@@ -179,7 +179,7 @@ fn exact_frame(scene: &[Flat], bg: u16) -> (Vec<f64>, Vec<usize>) {
             }
         }
         for (c, s) in cover.iter().enumerate() {
-            let s = to_f64(s) / 4096.0;
+            let s = to_f64(s) / f64::from(softedge::COVER_ONE);
             if s > 0.0 {
                 visible_count[c] += 1;
             }

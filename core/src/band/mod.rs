@@ -53,10 +53,14 @@
 //! sum of a pixel, a winding integral, is far inside `i32` for any shape
 //! with fewer than 32 767 nested windings.
 
+mod depth;
+mod errors;
 mod pixels;
 mod sweep;
 mod zsweep;
 
+pub use depth::{DepthBuffer, ZPass, SAMPLES};
+pub(crate) use depth::{SampleEdges, ALL_SAMPLES, FULL, FULL_BITS};
 pub(crate) use sweep::{ComposeOp, Coverage, Paint};
 
 use crate::shade::LIN_MAX;

@@ -10,7 +10,8 @@
 //! multiply per channel where `s` is not a whole pixel (a shift where it is).
 
 use super::BandBuffer;
-use crate::hsr::{DepthBuffer, DepthPlane, SampleEdges, ZPass, ALL_SAMPLES, FULL, FULL_BITS};
+use super::{DepthBuffer, SampleEdges, ZPass, ALL_SAMPLES, FULL, FULL_BITS};
+use crate::shade::DepthPlane;
 use crate::shade::{Plane, PLANE_FRAC};
 use crate::COVER_BITS;
 

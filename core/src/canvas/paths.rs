@@ -8,7 +8,7 @@
 //! its control polygon), widened by a stroke's reach.
 
 use super::{FineRect, Outline};
-use crate::geom::{FinePoint, PathSink};
+use crate::geom::{FinePoint, PathSink, FINE_LIMIT};
 use crate::path::{SegmentSink, Shape, StrokeError, StrokeStyle, Tolerance};
 
 /// The box around every point a description names.
@@ -92,14 +92,24 @@ pub(crate) struct Stroked<'s, 'd, S: ?Sized> {
 }
 
 impl<S: Shape + ?Sized> Stroked<'_, '_, S> {
-    /// The shape's bounds widened by the stroke's reach.
+    /// The shape's bounds widened by the stroke's reach. The stroke of a
+    /// path within the coordinate range may reach beyond it (a line on the
+    /// limit, half its width): its bounds are clamped to the range, as the
+    /// stroker clamps its points; a path beyond the range keeps its bounds,
+    /// and is rejected.
     pub(crate) fn widen(b: Option<FineRect>, style: &StrokeStyle<'_>) -> Option<FineRect> {
         let r = style.reach().min(i64::from(i32::MAX / 4)) as i32;
-        b.map(|b| FineRect {
-            x0: b.x0.saturating_sub(r),
-            y0: b.y0.saturating_sub(r),
-            x1: b.x1.saturating_add(r),
-            y1: b.y1.saturating_add(r),
+        b.map(|b| {
+            let inside = [(b.x0, b.y0), (b.x1, b.y1)]
+                .iter()
+                .all(|&(x, y)| FinePoint::new(x, y).in_range());
+            let lim = if inside { FINE_LIMIT } else { i32::MAX };
+            FineRect {
+                x0: b.x0.saturating_sub(r).max(-lim),
+                y0: b.y0.saturating_sub(r).max(-lim),
+                x1: b.x1.saturating_add(r).min(lim),
+                y1: b.y1.saturating_add(r).min(lim),
+            }
         })
     }
 }

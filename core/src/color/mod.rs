@@ -44,6 +44,7 @@
 
 #[cfg(feature = "embedded-graphics")]
 mod eg;
+mod errors;
 mod hex;
 pub mod srgb;
 

@@ -18,6 +18,7 @@
 
 use fixed::types::I28F4;
 
+mod errors;
 mod fine;
 
 pub use fine::{FinePoint, PathSink, FINE_BITS, FINE_LIMIT, FINE_ONE};

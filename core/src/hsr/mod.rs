@@ -147,41 +147,22 @@
 //! candidate lists live in caller scratch, and the frame does not depend on
 //! the band height. Accuracy, storage and cost: [`draw_warnock`].
 
-mod depth_plane;
+mod errors;
 mod fine_fill;
+mod primitives;
 mod range_clip;
 mod section;
 mod warnock;
 pub mod weiler;
-mod zbuffer;
 
-pub use depth_plane::{DepthPlane, DEPTH_FRAC};
-pub(crate) use range_clip::quad_depth_triangles;
+pub(crate) use crate::band::SampleEdges;
+pub use crate::band::{DepthBuffer, ZPass, SAMPLES};
+pub use crate::shade::{DepthPlane, DEPTH_FRAC};
 pub use section::Section;
 pub use warnock::{
     draw_warnock, scratch_len, WarnockStats, LEVELS, MAX_PARTIAL, MAX_TRIANGLES, ROOT_LOG2_SUB,
 };
 pub use weiler::{VisiblePiece, VisibleSet, WeilerStats, PIECE_VERTICES};
-pub use zbuffer::{DepthBuffer, SAMPLES};
-pub(crate) use zbuffer::{SampleEdges, ALL_SAMPLES, FULL, FULL_BITS};
-
-/// Which pass of the z-buffer a [`DepthTriangle::draw_z`] call makes (see
-/// the module documentation; [`draw_zbuffer`] runs them in order).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub enum ZPass {
-    /// One pass: replace a pixel where a whole fragment is nearer than all
-    /// of it, else composite under it. Exact for aliased drawing.
-    Single,
-    /// First of three: the nearest fragment touching each pixel sets its
-    /// threshold (nothing drawn). Call [`DepthBuffer::finish_centres`]
-    /// after it.
-    Centres,
-    /// Second of three: the fragments at or in front of the threshold.
-    Front,
-    /// Third of three: the fragments behind it.
-    Back,
-}
 
 use core::cmp::Ordering;
 

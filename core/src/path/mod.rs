@@ -116,6 +116,7 @@ pub mod bezier;
 mod buffer;
 #[cfg(feature = "embedded-graphics")]
 pub mod eg;
+mod errors;
 mod flattener;
 pub mod segment;
 mod shape;

@@ -103,6 +103,7 @@
 //! assert_eq!(stats.changed, 4);
 //! ```
 
+mod errors;
 mod lab;
 mod tables;
 

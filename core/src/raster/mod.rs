@@ -31,14 +31,14 @@ pub(crate) mod simple;
 
 use crate::band::{BandBuffer, ComposeOp, Coverage, Paint};
 use crate::edge::{AliasedWalk, AreaMode, EdgeWalk};
-use crate::geom::{area2, CoordError, FinePoint, SubPoint};
+use crate::geom::{area2, FinePoint, SubPoint};
 use crate::pixel_model::{walk_bed_of_nails, walk_circular, walk_hex19, walk_hex7, CircularFilter};
 use crate::shade::Plane;
 use crate::style::Opacity;
 use crate::SUB_BITS;
 
-/// Most vertices a [`Polygon`] may have.
-pub const MAX_POLYGON_VERTICES: usize = 64;
+pub use crate::error::DrawError;
+pub use crate::units::MAX_POLYGON_VERTICES;
 
 /// What "covered area" means for an edge pixel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -101,35 +101,6 @@ impl RenderStyle {
         antialias: false,
         model: PixelModel::Box,
     };
-}
-
-/// Why a primitive was not drawn.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-#[non_exhaustive]
-pub enum DrawError {
-    /// A vertex is outside the accepted coordinate range.
-    Coord(CoordError),
-    /// A point on the fine grid (1/1024 px) is outside the accepted
-    /// coordinate range.
-    FineCoord(FinePoint),
-    /// A mesh's triangle names a point it does not have.
-    BadIndex,
-    /// A stroke was not drawn completely (its dash pattern needed too many
-    /// intervals).
-    Stroke(crate::path::StrokeError),
-    /// More than [`MAX_POLYGON_VERTICES`] vertices.
-    TooManyVertices,
-    /// Per-vertex colours given for a different number of vertices.
-    ColorCount,
-    /// Two non-adjacent edges of the polygon touch or cross.
-    SelfIntersecting,
-}
-
-impl From<CoordError> for DrawError {
-    fn from(e: CoordError) -> Self {
-        Self::Coord(e)
-    }
 }
 
 /// A triangle with a linear 12-bit colour per vertex (Gouraud shading).
@@ -254,30 +225,9 @@ impl<'a, const C: usize> Polygon<'a, C> {
         })
     }
 
-    /// The polygon as triangles with a depth per vertex (`depths`, one per
-    /// vertex, larger is nearer), for hidden-surface removal
-    /// ([`hsr`](crate::hsr)). The same checks as [`draw`](Self::draw);
-    /// [`DrawError::ColorCount`] also when `depths` has another length.
-    pub fn depth_triangles(
-        &self,
-        depths: &[u16],
-        mut emit: impl FnMut(crate::hsr::DepthTriangle<C>),
-    ) -> Result<(), DrawError> {
-        let Some(p) = self.prepare::<MAX_POLYGON_VERTICES>(Some(depths))? else {
-            return Ok(());
-        };
-        p.triangles(|vertices, colors, depth| {
-            emit(crate::hsr::DepthTriangle {
-                vertices,
-                colors,
-                depth,
-            })
-        })
-    }
-
     /// Checks the polygon and drops repeated vertices; `None` when nothing
     /// is to be drawn. Keeps up to `D` depths (0: none, all read as 0).
-    fn prepare<const D: usize>(
+    pub(crate) fn prepare<const D: usize>(
         &self,
         depths: Option<&[u16]>,
     ) -> Result<Option<Prepared<C, D>>, DrawError> {
@@ -332,7 +282,7 @@ impl<'a, const C: usize> Polygon<'a, C> {
 
 /// A checked polygon: distinct consecutive vertices, simple; up to `D`
 /// depths (missing ones read as 0).
-struct Prepared<const C: usize, const D: usize> {
+pub(crate) struct Prepared<const C: usize, const D: usize> {
     points: heapless::Vec<SubPoint, MAX_POLYGON_VERTICES>,
     colors: heapless::Vec<[u16; C], MAX_POLYGON_VERTICES>,
     depths: heapless::Vec<u16, D>,
@@ -340,7 +290,7 @@ struct Prepared<const C: usize, const D: usize> {
 
 impl<const C: usize, const D: usize> Prepared<C, D> {
     /// Splits the polygon into triangles along its diagonals (ear clipping).
-    fn triangles(
+    pub(crate) fn triangles(
         &self,
         mut emit: impl FnMut([SubPoint; 3], [[u16; C]; 3], [u16; 3]),
     ) -> Result<(), DrawError> {
@@ -429,37 +379,10 @@ impl<const C: usize> Line<C> {
         Ok(())
     }
 
-    /// The line's rectangle as two triangles with a depth at each end
-    /// (`depths[0]` at `from`), for hidden-surface removal
-    /// ([`hsr`](crate::hsr)). The rectangle is the one [`draw`](Self::draw)
-    /// fills; its intensity is not rescaled to the ideal area (the depth
-    /// triangles do not know the band's background), so its energy may
-    /// differ from length times colour by the rounding of its corners to
-    /// 1/16 px (a few per cent at some angles).
-    ///
-    /// A line on or near the coordinate limit has rectangle corners up to
-    /// half a pixel beyond it: the rectangle is then clipped to the range
-    /// (cut points on the limit lines, so no pixel of a frame moves but
-    /// those at the limit itself, by at most 1/64 px; `hsr::range_clip`),
-    /// so every hidden-surface method takes it.
-    pub fn depth_triangles(
-        &self,
-        depths: [u16; 2],
-        emit: impl FnMut(crate::hsr::DepthTriangle<C>),
-    ) -> Result<(), DrawError> {
-        let Some((q, _, _)) = self.rectangle()? else {
-            return Ok(());
-        };
-        let [c0, c1] = self.colors;
-        let [z0, z1] = depths;
-        crate::hsr::quad_depth_triangles(q, [c0, c1, c1, c0], [z0, z1, z1, z0], emit);
-        Ok(())
-    }
-
     /// The rectangle of width 1 px centred on the segment, corners rounded
     /// to 1/16 px, with its ideal and its actual area (in the same units),
     /// or `None` for a zero-length line.
-    fn rectangle(&self) -> Result<Option<([SubPoint; 4], i64, i64)>, DrawError> {
+    pub(crate) fn rectangle(&self) -> Result<Option<([SubPoint; 4], i64, i64)>, DrawError> {
         self.from.check()?;
         self.to.check()?;
         let (dx, dy) = (

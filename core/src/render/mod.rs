@@ -19,6 +19,7 @@
 //! of that width, one window set-up per band on the target; the shapes
 //! outside it cost their bounds test only.
 
+mod errors;
 use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::geometry::{OriginDimensions, Point, Size};
 use embedded_graphics_core::primitives::Rectangle;

@@ -66,6 +66,7 @@
 //! ```
 
 mod camera;
+mod errors;
 mod math;
 mod mesh;
 mod trig;

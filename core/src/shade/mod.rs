@@ -25,6 +25,10 @@
 //! at the centres of pixels the primitive touches (within `√2/2` px of it),
 //! so `|I| < 2 * 4096` and every product downstream stays far inside `i64`.
 
+mod depth_plane;
+
+pub use depth_plane::{DepthPlane, DEPTH_FRAC};
+
 use crate::geom::SubPoint;
 
 /// Largest linear intensity: 12 bits.

@@ -32,6 +32,7 @@
 
 pub mod bits;
 pub mod dither;
+mod errors;
 pub(crate) mod fixpow;
 pub mod format;
 pub mod gamma;

@@ -10,8 +10,9 @@
 //! Every γ format of [`format`](super::format) is a profile (with the
 //! `embedded-graphics` feature, its colour type is the driver's).
 
-use super::dither::{Bayer8, FloydSteinberg};
-use super::format::ToneFormat;
+use super::dither::FloydSteinberg;
+#[cfg(feature = "embedded-graphics")]
+use super::{dither::Bayer8, format::ToneFormat};
 
 /// One row of a band as the tone stage reads it: frame row `y`, columns
 /// `x0..x0 + len()`, linear 12-bit pixels.

@@ -1,6 +1,8 @@
-//! The depth buffer of one band: a depth and a coverage count per pixel.
+//! The depth buffer of one band: a depth, a coverage count and a sample
+//! mask per pixel, and the passes that compose depth fragments into it
+//! (seed 004's z-buffer; the method is described in [`hsr`](crate::hsr)).
 
-use crate::band::{Band, BandError, MAX_WIDTH};
+use super::{Band, BandError, MAX_WIDTH};
 use crate::geom::SubPoint;
 use crate::SUB_ONE;
 
@@ -334,4 +336,22 @@ impl SampleEdges {
             *v += a * i64::from(SUB_ONE);
         }
     }
+}
+
+/// Which pass of the z-buffer a [`DepthTriangle::draw_z`](crate::hsr::DepthTriangle::draw_z) call makes (see
+/// the module documentation; [`draw_zbuffer`](crate::hsr::draw_zbuffer) runs them in order).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum ZPass {
+    /// One pass: replace a pixel where a whole fragment is nearer than all
+    /// of it, else composite under it. Exact for aliased drawing.
+    Single,
+    /// First of three: the nearest fragment touching each pixel sets its
+    /// threshold (nothing drawn). Call [`DepthBuffer::finish_centres`]
+    /// after it.
+    Centres,
+    /// Second of three: the fragments at or in front of the threshold.
+    Front,
+    /// Third of three: the fragments behind it.
+    Back,
 }

@@ -1,7 +1,7 @@
 //! Setup: the depth plane of a triangle, `z(i, j)` at pixel centres.
 
+use super::{div_round, PlaneFit};
 use crate::geom::SubPoint;
-use crate::shade::{div_round, PlaneFit};
 
 /// Fraction bits of the fine depth values the sweep steps.
 pub const DEPTH_FRAC: u32 = 16;
