@@ -28,6 +28,7 @@ use crate::hsr::HsrError;
 use crate::postfilter::FilterError;
 use crate::raster::{DrawError, MAX_POLYGON_VERTICES};
 use crate::scene3d::{SceneError, MAX_FOCAL_PX, MAX_MESH_VERTICES, MAX_SEGMENTS, MIN_SEGMENTS};
+use crate::style::{GradientError, MAX_STOPS};
 use crate::tone::ToneError;
 
 impl Display for CoordError {
@@ -77,6 +78,28 @@ impl Error for DrawError {
         }
     }
 }
+
+impl Display for GradientError {
+    fn fmt(&self, f: &mut Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NoStops => f.write_str("gradient has no stops"),
+            Self::TooManyStops { given } => {
+                write!(f, "gradient has {given} stops, at most {MAX_STOPS}")
+            }
+            Self::Unsorted { index } => {
+                write!(f, "gradient stop {index} lies before the stop ahead of it")
+            }
+            Self::Coord(p) => write!(
+                f,
+                "point ({}, {}) in 1/1024 px is outside ±{COORD_LIMIT_PX} px",
+                p.x, p.y
+            ),
+            Self::Radius { radius } => write!(f, "gradient radius {radius} is negative"),
+        }
+    }
+}
+
+impl Error for GradientError {}
 
 impl Display for BandError {
     fn fmt(&self, f: &mut Formatter<'_>) -> fmt::Result {

@@ -53,6 +53,7 @@
 //! sum of a pixel, a winding integral, is far inside `i32` for any shape
 //! with fewer than 32 767 nested windings.
 
+mod gradient;
 mod pixels;
 mod sweep;
 mod zsweep;
