@@ -83,10 +83,12 @@ impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
     /// canvas
     ///     .fill_shape_gradient(&disc, &glow, FillRule::NonZero, Blend::Over, Opacity::OPAQUE)
     ///     .unwrap();
-    /// // 4 px from the centre: half way, half the light (2047.5).
-    /// assert_eq!(canvas.buffer().lin12(13, 9), Some([2047]));
+    /// // 4 px from the centre: half way, half the light (2047.5 exactly;
+    /// // the distance is coloured at the middle of its 1/128-px quantum,
+    /// // 4.004 px here, and this ramp falls by 512 levels per pixel).
+    /// assert_eq!(canvas.buffer().lin12(13, 9), Some([2046]));
     /// // At the centre: 4095 within the bound of the radial quantum
-    /// // (0.0048 px at 512 levels per pixel).
+    /// // (0.0095 px at 512 levels per pixel).
     /// assert!(canvas.buffer().lin12(9, 9).unwrap()[0] >= 4092);
     /// ```
     pub fn fill_shape_gradient<S: Shape + ?Sized>(

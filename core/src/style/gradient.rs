@@ -36,15 +36,17 @@
 //!   level, so after the resolve a pixel is within **0.57 levels** of the
 //!   exact value (the accumulator keeps the fraction, rounding once, at
 //!   resolve).
-//! - **radial**: the distance, quantised to 1/256 px, is tracked exactly
+//! - **radial**: the distance, quantised to 1/128 px, is tracked exactly
 //!   along a row with additions and compares (an incremental integer square
 //!   root, see the sweep's `gradient` module); the colour is evaluated at
 //!   the middle of the distance's quantum and stepped per quantum. The
-//!   centre is rounded to the 1/256-px grid, so the distance a pixel is
-//!   coloured at is within `(1 + √2) / 512 < 0.0048` px of the true one,
-//!   and a pixel is within **0.55 levels + 0.0048 px × the steepest colour
-//!   slope** (levels per pixel of radius) of the exact value: 0.65 levels
-//!   for black to white over a radius of 200 px, 0.95 over 50 px.
+//!   centre is rounded to the 1/128-px grid, so the distance a pixel is
+//!   coloured at is within `(1 + √2) / 256 < 0.0095` px of the true one
+//!   (1/256 px of the distance from the rounded centre), and a pixel is
+//!   within **0.55 levels + 0.0095 px × the steepest colour slope**
+//!   (levels per pixel of radius) of the exact value: 0.75 levels for
+//!   black to white over a radius of 200 px, 1.3 over 50 px (in linear
+//!   light: an sRGB code or less near black, invisible elsewhere).
 //!
 //! Every pixel's colour is a function of the pixel and the gradient only
 //! (each run of a row is set up from its own first pixel, exactly), so a
@@ -88,11 +90,11 @@ pub const MAX_STOPS: usize = 8;
 /// Bits of an [`Offset`]: 1/4096 of the gradient's length.
 pub(crate) const T_BITS: u32 = 12;
 
-/// Fraction bits of the distance the radial stepper tracks: 1/256 px.
-pub(crate) const RADIAL_BITS: u32 = 8;
+/// Fraction bits of the distance the radial stepper tracks: 1/128 px.
+pub(crate) const RADIAL_BITS: u32 = 7;
 
-/// Largest tracked distance of the radial stepper, in its units (1/256
-/// px): 16 384 px, beyond any pixel of the coordinate range; stop
+/// Largest tracked distance of the radial stepper, in its units (1/128
+/// px): 32 768 px, beyond any pixel of the coordinate range; stop
 /// distances further out are clamped here (never reached).
 pub(crate) const RADIAL_LIMIT: i32 = 1 << 22;
 
@@ -414,12 +416,12 @@ pub(crate) struct LinePlane {
     pub(crate) g: i32,
 }
 
-/// A radial gradient's set-up, in units of 1/256 px. Region `r` of a
+/// A radial gradient's set-up, in units of 1/128 px. Region `r` of a
 /// tracked distance `D` is the number of thresholds `th[i] <= D`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub(crate) struct RadialRamp<const C: usize> {
-    /// The centre on the 1/256-px grid.
+    /// The centre on the 1/128-px grid.
     pub(crate) cx: i32,
     pub(crate) cy: i32,
     /// The first `D` of each stop's region.
@@ -604,16 +606,16 @@ const fn linear_ramp<const C: usize>(
 /// The set-up of a radial gradient (`1 <= len <= MAX_STOPS`, valid stops,
 /// `radius >= 0`).
 ///
-/// The sweep tracks `D = floor(256 · d)` for the distance `d` (px) from
-/// the centre rounded to the 1/256-px grid, and colours a pixel at the
-/// middle of its quantum, `(D + 1/2) / 256` px: `t = (2D + 1) · 2 / R` with
+/// The sweep tracks `D = floor(128 · d)` for the distance `d` (px) from
+/// the centre rounded to the 1/128-px grid, and colours a pixel at the
+/// middle of its quantum, `(D + 1/2) / 128` px: `t = (2D + 1) · 4 / R` with
 /// `R` in fine units. A stop at offset `O` (1/4096) starts at the first `D`
-/// with `(2D + 1) W >= R O`, `W = 2^13`. In the segment of stops `a`, `b`
+/// with `(2D + 1) W >= R O`, `W = 2^14`. In the segment of stops `a`, `b`
 /// (`den = R (O_b - O_a)`, below 2^44), the colour is
 /// `2^16 c_a + 2^16 Δc ((2D + 1) W - R O_a) / den`: its value `a` at the
-/// segment's first `D` is rounded once (numerator below 2^43), and its
+/// segment's first `D` is rounded once (numerator below 2^44), and its
 /// slope per unit of `D`, `2^16 Δc · 2W / den`, is kept with 16 more
-/// fraction bits in `mhp` (numerator below 2^59).
+/// fraction bits in `mhp` (numerator below 2^60).
 const fn radial_ramp<const C: usize>(
     centre: FinePoint,
     radius: i32,
@@ -627,7 +629,7 @@ const fn radial_ramp<const C: usize>(
     }
     let shift = FINE_BITS - RADIAL_BITS;
     let r = radius as i64;
-    // (D + 1/2) units of 1/256 px are (2D + 1) 2^(10 - 8 - 1) fine units;
+    // (D + 1/2) units of 1/128 px are (2D + 1) 2^(10 - 7 - 1) fine units;
     // times 4096 for offsets in 1/4096: (2D + 1) W.
     let w_bits = FINE_BITS - RADIAL_BITS - 1 + T_BITS;
     let w: i64 = 1 << w_bits;
