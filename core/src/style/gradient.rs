@@ -249,6 +249,10 @@ pub enum GradientError {
 /// Fill a shape with it by [`Canvas::fill_shape_gradient`]
 /// (or [`stroke_shape_gradient`], [`fill_gradient`]).
 ///
+/// The set-up of 8 stops makes a `Gradient<3>` 576 bytes (`Gradient<1>`
+/// 280): make it once, not per band; as a `static` (the constructors are
+/// `const fn`) it lives in flash.
+///
 /// [`Canvas::fill_shape_gradient`]: crate::canvas::Canvas::fill_shape_gradient
 /// [`stroke_shape_gradient`]: crate::canvas::Canvas::stroke_shape_gradient
 /// [`fill_gradient`]: crate::canvas::Canvas::fill_gradient
