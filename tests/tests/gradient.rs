@@ -1205,3 +1205,36 @@ fn stops_take_embedded_graphics_colours_as_srgb() {
     ];
     assert!(grey[0].color[0] > grey[1].color[0]);
 }
+
+/// The constructors are `const fn`: a gradient can be a `static` (in
+/// flash on a microcontroller), made at compile time.
+static GLOW: Gradient<3> = match Gradient::radial(
+    FinePoint::centre_of(16, 16),
+    12 * 1024,
+    &[
+        Stop::lin(Offset::ZERO, [4095, 4095, 3000]),
+        Stop::lin(Offset::from_percent(70), [4095, 1200, 0]),
+        Stop::lin(Offset::ONE, [0, 0, 0]),
+    ],
+) {
+    Ok(g) => g,
+    Err(_) => panic!("bad gradient"),
+};
+
+#[test]
+fn a_gradient_can_be_made_at_compile_time() {
+    let disc = Circle::new(FinePoint::centre_of(16, 16), 12 * 1024);
+    let f = render(33, 33, 11, [0; 3], false, |c| {
+        c.fill_shape_gradient(
+            &disc,
+            &GLOW,
+            FillRule::NonZero,
+            Blend::Over,
+            Opacity::OPAQUE,
+        )
+        .unwrap();
+    });
+    let [r, g, b] = f.lin(16, 16);
+    assert!(r == 4095 && g >= 4090 && b >= 2995, "{r} {g} {b}");
+    assert_eq!(GLOW.stops().len(), 3);
+}
