@@ -1,4 +1,5 @@
-//! Units every stage shares: coverage and the accumulator's fixed point.
+//! Units every stage shares: linear intensity, coverage, the
+//! accumulator's fixed point and its one rounding.
 //!
 //! Kept below the stages (geometry, edges, band, compose, tone) so that none
 //! of them owns a unit the others depend on.
@@ -20,3 +21,21 @@ pub const COVER_BITS: u32 = 16;
 /// Most vertices a [`Polygon`](crate::raster::Polygon) may have (seed
 /// 000's primitives; paths and shapes have no such limit).
 pub const MAX_POLYGON_VERTICES: usize = 64;
+
+/// Largest linear intensity: 12 bits.
+pub const LIN_MAX: u16 = 4095;
+
+/// Rounds an accumulated value to linear 12 bits: the pipeline's one
+/// rounding.
+#[inline]
+pub(crate) fn resolve(acc: i32) -> u16 {
+    let v = ((acc >> (COVER_BITS - 1)) + 1) >> 1;
+    // One unsigned compare in the common case.
+    if v as u32 <= u32::from(LIN_MAX) {
+        v as u16
+    } else if v < 0 {
+        0
+    } else {
+        LIN_MAX
+    }
+}

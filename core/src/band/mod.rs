@@ -55,10 +55,12 @@
 
 mod depth;
 mod errors;
+mod gradient;
 mod pixels;
 mod sweep;
 mod zsweep;
 
+pub(crate) use crate::units::resolve;
 pub use depth::{DepthBuffer, ZPass, SAMPLES};
 pub(crate) use depth::{SampleEdges, ALL_SAMPLES, FULL, FULL_BITS};
 pub(crate) use sweep::{ComposeOp, Coverage, Paint};
@@ -590,21 +592,6 @@ impl SweepRow<'_> {
             *dlo = (*dlo).min(lo);
             *dhi = (*dhi).max(hi);
         }
-    }
-}
-
-/// Rounds an accumulated value to linear 12 bits: the pipeline's one
-/// rounding.
-#[inline]
-pub(crate) fn resolve(acc: i32) -> u16 {
-    let v = ((acc >> (COVER_BITS - 1)) + 1) >> 1;
-    // One unsigned compare in the common case.
-    if v as u32 <= u32::from(LIN_MAX) {
-        v as u16
-    } else if v < 0 {
-        0
-    } else {
-        LIN_MAX
     }
 }
 

@@ -46,6 +46,8 @@ pub(crate) enum Paint<'p, const C: usize> {
     /// A Gouraud plane of absolute intensity (built over a zero
     /// background).
     Plane(&'p Plane<C>),
+    /// A linear or radial gradient (`band/gradient.rs`).
+    Gradient(&'p crate::style::Gradient<C>),
 }
 
 /// How a shape's coverage meets the band.
@@ -256,17 +258,18 @@ fn run<const C: usize>(
                 }
             }
         }
+        (_, Paint::Gradient(g)) => super::gradient::compose(px, k, whole, x, y, g, op, bg),
     }
 }
 
 /// The pixels of a run, `C` values each. (`chunks_exact` would divide the
 /// run's length by `C`: a library call on the Cortex-M0.)
 #[inline]
-fn pixels<const C: usize>(px: &mut [i32]) -> Pixels<'_, C> {
+pub(super) fn pixels<const C: usize>(px: &mut [i32]) -> Pixels<'_, C> {
     Pixels(px)
 }
 
-struct Pixels<'p, const C: usize>(&'p mut [i32]);
+pub(super) struct Pixels<'p, const C: usize>(&'p mut [i32]);
 
 impl<'p, const C: usize> Iterator for Pixels<'p, C> {
     type Item = &'p mut [i32; C];
@@ -283,7 +286,7 @@ impl<'p, const C: usize> Iterator for Pixels<'p, C> {
 /// `v` is split at bit 14, so each product stays below `2^31` (`v` is
 /// limited to `±2^29` first, two full scales beyond any intensity).
 #[inline]
-fn mul_share(v: i32, k: i32) -> i32 {
+pub(super) fn mul_share(v: i32, k: i32) -> i32 {
     if k == COVER_ONE {
         return v;
     }

@@ -19,6 +19,7 @@
 //! reason kept ([`Canvas::skipped`]): the rest of the frame is drawn.
 
 mod cache;
+mod gradient;
 pub(crate) mod paths;
 #[cfg(feature = "embedded-graphics")]
 mod target;

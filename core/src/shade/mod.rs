@@ -31,8 +31,7 @@ pub use depth_plane::{DepthPlane, DEPTH_FRAC};
 
 use crate::geom::SubPoint;
 
-/// Largest linear intensity: 12 bits.
-pub const LIN_MAX: u16 = 4095;
+pub use crate::units::LIN_MAX;
 
 /// Fraction bits of the plane's fine intensities.
 pub const PLANE_FRAC: u32 = 16;

@@ -2,6 +2,10 @@
 //! share (fill rule), and how a shape meets what is under it (blend,
 //! opacity).
 
+mod errors;
+pub mod gradient;
+pub use gradient::{Gradient, GradientError, GradientKind, Offset, Stop, MAX_STOPS};
+
 /// Which points a path's contours enclose.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]

@@ -45,7 +45,7 @@ impl<'r, const C: usize> ToneRow<'r, C> {
         let mut out = [0u16; C];
         if let Some(px) = self.acc.get(k * C..k * C + C) {
             for (o, &a) in out.iter_mut().zip(px) {
-                *o = crate::band::resolve(a);
+                *o = crate::units::resolve(a);
             }
         }
         out
