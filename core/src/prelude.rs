@@ -10,7 +10,7 @@
 
 pub use crate::band::BandBuffer;
 pub use crate::canvas::{Canvas, WalkSlot};
-pub use crate::draw::{AaDrawable, AaStyle};
+pub use crate::draw::{AaDrawable, AaGradient, AaStyle};
 pub use crate::geom::FinePoint;
 pub use crate::path::{Dash, LineCap, LineJoin, MiterLimit};
 pub use crate::raster::DrawError;

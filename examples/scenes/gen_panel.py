@@ -25,12 +25,15 @@ band_rows = {16 if not oled else 8}
     def col(rgb, grey):
         return grey if oled else rgb
     # Dial face
-    out.append(f"""# The dial: a face, a rim, 41 ticks (long every 5th) and the places of
+    face = ('color = "#000000"' if oled else
+            f'gradient = {{ kind = "radial", centre = {pt(cx, cy - R/3)}, radius = {f(1.3*R)}, '
+            'stops = [{ offset = 0, color = "#34404e" }, { offset = 1, color = "#10161e" }] }')
+    out.append(f"""# The dial: a face (a radial gradient, lit from above), a rim, 41 ticks (long every 5th) and the places of
 # its numbers (small discs where the labels go).
 [[circle]]
 centre = {pt(cx, cy)}
 radius = {f(R)}
-color = "{col('#1c2430', '#000000')}"
+{face}
 stroke_color = "{col('#8090a0', '#ffffff')}"
 stroke_width = {f(2*k if not oled else 1)}
 """)
@@ -98,7 +101,10 @@ cap = "round"
 """)
     # rounded button
     bx, by, bw, bh = L['button']
-    out.append(f"""# A rounded button: a shadow at half opacity, the face, a 1.5-px rim.
+    button = ('color = "#000000"' if oled else
+              f'gradient = {{ kind = "linear", from = {pt(bx, by)}, to = {pt(bx, by + bh)}, '
+              'stops = [{ offset = 0, color = "#4a8ae8" }, { offset = 1, color = "#1c4c98" }] }')
+    out.append(f"""# A rounded button (a vertical gradient): a shadow at half opacity, the face, a 1.5-px rim.
 [[rect]]
 position = {pt(bx+2*k, by+3*k)}
 size = [{f(bw)}, {f(bh)}]
@@ -109,7 +115,7 @@ opacity = 0.5
 position = {pt(bx, by)}
 size = [{f(bw)}, {f(bh)}]
 radius = {f(L['bradius'])}
-color = "{col('#2868c8', '#000000')}"
+{button}
 stroke_color = "{col('#90b8f0', '#ffffff')}"
 stroke_width = {f(1.5*k if not oled else 1)}
 stroke_alignment = "inside"

@@ -12,7 +12,7 @@ use softedge::geom::FinePoint;
 use softedge::path::{
     self, svg::SvgPath, Dash, LineCap, LineJoin, MiterLimit, StrokeAlignment, StrokeStyle,
 };
-use softedge::style::{Blend, FillRule, Opacity};
+use softedge::style::{Blend, FillRule, Gradient, Opacity};
 use softedge::{DrawError, Line, Polygon, PolygonColors, SubPoint, Triangle};
 
 /// The outline of a [`ShapeItem`], owned.
@@ -116,8 +116,10 @@ impl<const C: usize> Stroke<C> {
 pub struct ShapeItem<const C: usize> {
     /// The outline.
     pub geometry: Geometry,
-    /// The fill's linear colour, if filled.
+    /// The fill's linear colour, if filled with one.
     pub fill: Option<[u16; C]>,
+    /// The fill's gradient, if filled with one.
+    pub gradient: Option<Gradient<C>>,
     /// The fill rule.
     pub rule: FillRule,
     /// The stroke, if stroked (drawn after the fill).
@@ -135,11 +137,14 @@ impl<const C: usize> ShapeItem<C> {
         blend: Blend,
     ) -> Result<(), DrawError> {
         let op = self.opacity;
-        let fill = match self.fill {
-            Some(c) => {
+        let fill = match (self.fill, &self.gradient) {
+            (Some(c), _) => {
                 with_shape!(&self.geometry, s => canvas.fill_shape(s, c, self.rule, blend, op))
             }
-            None => Ok(()),
+            (None, Some(g)) => with_shape!(&self.geometry, s => {
+                canvas.fill_shape_gradient(s, g, self.rule, blend, op)
+            }),
+            (None, None) => Ok(()),
         };
         let stroke = match &self.stroke {
             Some(st) if st.width > 0 => {

@@ -268,3 +268,61 @@ fn degenerate_shapes_draw_nothing() {
         assert!(img.iter().all(|&v| v == 0), "{table}");
     }
 }
+
+#[test]
+fn gradients_interpolate_in_linear_light_and_check_their_stops() {
+    let text = "[display]\nwidth = 240\nheight = 4\nformat = \"gray8\"\nbackground = [0]\n\
+                [render]\ngamma = \"srgb\"\n\
+                [[rect]]\nposition = [0, 0]\nsize = [240, 4]\n\
+                gradient = { kind = \"linear\", from = [0, 0], to = [240, 0], stops = [{ offset = 0, color = \"#000000\" }, { offset = 1, color = \"#ffffff\" }] }\n";
+    let f = file(text);
+    let lin = f.render_linear().unwrap();
+    let Linear::Gray(img) = &lin else { panic!() };
+    let row: Vec<u16> = img.pixels().take(240).map(|p| p[0]).collect();
+    // Pixel 119's centre is at t = 119.5 / 240: half the light, linear.
+    let want = 4095.0 * 119.5 / 240.0;
+    assert!((f64::from(row[119]) - want).abs() <= 1.0, "{}", row[119]);
+    assert!(row.windows(2).all(|w| w[0] <= w[1]), "monotone");
+    let codes = f.tone(&lin).codes;
+    assert!(
+        (186..=188).contains(&codes[119]),
+        "sRGB code {}",
+        codes[119]
+    );
+    let radial = "[display]\nwidth = 20\nheight = 20\nformat = \"rgb888\"\nbackground = [0, 0, 0]\n\
+                  [[circle]]\ncentre = [10, 10]\nradius = 10\n\
+                  gradient = { kind = \"radial\", center = [10, 10], radius = 10, stops = [{ offset = 0, color = \"#ffffff\" }, { offset = 1, color = [0, 0, 4095] }] }\n";
+    let img = rgb(radial);
+    // Pixel (10, 10)'s centre is 0.71 px from the centre: 7 % of the way to blue.
+    assert!(
+        (3700..3900).contains(&img[10 * 20 + 10][0]),
+        "{:?}",
+        img[10 * 20 + 10]
+    );
+    assert!(
+        img[10 * 20 + 1][2] == 4095 && img[10 * 20 + 1][0] < 700,
+        "{:?}",
+        img[10 * 20 + 1]
+    );
+    let h = head(16, 16, "gray8");
+    let g = "gradient = { kind = \"linear\", from = [0, 0], to = [9, 0], stops = [{ offset = 0.5, color = [1] }, { offset = 0.25, color = [2] }] }\n";
+    for (extra, field, words) in [
+        (g.to_string(), "rect[0].gradient.stops", "before"),
+        (format!("color = [1]\n{g}"), "rect[0].gradient", "not both"),
+        (
+            g.replace("linear", "conic"),
+            "rect[0].gradient.kind",
+            "linear, radial",
+        ),
+        (
+            g.replace("from = [0, 0], ", ""),
+            "rect[0].gradient",
+            "`from`",
+        ),
+    ] {
+        let e = err(&format!(
+            "{h}[[rect]]\nposition = [0, 0]\nsize = [8, 8]\n{extra}"
+        ));
+        assert!(e.contains(field) && e.contains(words), "{extra}: {e}");
+    }
+}

@@ -48,7 +48,7 @@ use crate::canvas::Canvas;
 use crate::color::IntoLinear;
 use crate::path::{Dash, LineCap, LineJoin, MiterLimit, StrokeAlignment, StrokeStyle};
 use crate::raster::DrawError;
-use crate::style::{Blend, FillRule, Opacity};
+use crate::style::{Blend, FillRule, Gradient, Opacity};
 
 /// How a primitive is drawn anti-aliased: fill and stroke colours, the
 /// stroke (width down to hairlines, joins, caps, dashes, alignment), the
@@ -219,30 +219,24 @@ impl<Col: PixelColor> From<PrimitiveStyle<Col>> for AaStyle<'static, Col> {
 }
 
 /// A styled primitive that draws itself, anti-aliased, into a band's
-/// canvas (as embedded-graphics' `Drawable` draws into a `DrawTarget`).
+/// canvas of `C` channels (as embedded-graphics' `Drawable` draws into a
+/// `DrawTarget`): a primitive with an [`AaStyle`] (colours the canvas
+/// converts) or an [`AaGradient`] (a gradient of the canvas's channels).
 ///
 /// A rejected shape (coordinates outside the range, a stroke too wide) is
 /// not drawn, counted in the canvas's [`skipped`](Canvas::skipped) and
 /// returned; the renderer reports it after the frame. Fill and stroke are
 /// both tried; the first error is returned.
-pub trait AaDrawable {
-    /// The style's colour type.
-    type Color;
-
+pub trait AaDrawable<const C: usize> {
     /// Draws into `canvas`, whose band may hold only part of the shape
     /// (the rest is drawn in the other bands).
-    fn draw<const C: usize, D>(&self, canvas: &mut Canvas<'_, '_, C, D>) -> Result<(), DrawError>
-    where
-        Self::Color: IntoLinear<C>;
+    fn draw<D>(&self, canvas: &mut Canvas<'_, '_, C, D>) -> Result<(), DrawError>;
 }
 
-impl<P: AaShape, Col: Copy> AaDrawable for Styled<P, AaStyle<'_, Col>> {
-    type Color = Col;
-
-    fn draw<const C: usize, D>(&self, canvas: &mut Canvas<'_, '_, C, D>) -> Result<(), DrawError>
-    where
-        Col: IntoLinear<C>,
-    {
+impl<P: AaShape, Col: Copy + IntoLinear<C>, const C: usize> AaDrawable<C>
+    for Styled<P, AaStyle<'_, Col>>
+{
+    fn draw<D>(&self, canvas: &mut Canvas<'_, '_, C, D>) -> Result<(), DrawError> {
         let s = &self.style;
         let shape = self.primitive.shape();
         let fill = match s.fill_color {
@@ -256,5 +250,104 @@ impl<P: AaShape, Col: Copy> AaDrawable for Styled<P, AaStyle<'_, Col>> {
             _ => Ok(()),
         };
         fill.and(stroke)
+    }
+}
+
+/// How a primitive is drawn with a [`Gradient`]: its fill, or its stroke
+/// (width, joins, caps, dashes, alignment), with a fill rule, opacity and
+/// blend. The gradient's stops are in the canvas's channels (`Gradient<3>`
+/// on an RGB display); make it once, as a `const` or a `static` in flash
+/// if it never changes.
+///
+/// ```
+/// use embedded_graphics::pixelcolor::Rgb565;
+/// use embedded_graphics::prelude::*;
+/// use embedded_graphics::primitives::Circle;
+/// use softedge::prelude::*;
+/// use softedge::style::{Gradient, Offset, Stop};
+/// # use softedge::{Band, BandBuffer};
+/// # let (mut acc, mut cover) = ([0i32; 3 * 400], [0i32; 480]);
+/// # let mut buf = BandBuffer::<3>::new(&mut acc, &mut cover, Band::new(20, 0, 20)).unwrap();
+/// # buf.clear([0; 3]);
+/// # let mut canvas: Canvas<'_, '_, 3, Rgb565> = Canvas::typed(&mut buf, None);
+/// let glow = Gradient::radial(
+///     FinePoint::from_px(10, 10),
+///     10 * 1024,
+///     &[Stop::new(Offset::ZERO, Rgb565::WHITE), Stop::new(Offset::ONE, Rgb565::BLUE)],
+/// )?;
+/// Circle::new(Point::new(0, 0), 20).into_styled(AaGradient::fill(&glow)).draw(&mut canvas)?;
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct AaGradient<'a, const C: usize> {
+    /// The gradient.
+    pub gradient: &'a Gradient<C>,
+    /// `None`: the fill; `Some`: the stroke of this style.
+    pub stroke: Option<StrokeStyle<'a>>,
+    /// Which points the fill covers.
+    pub fill_rule: FillRule,
+    /// The opacity.
+    pub opacity: Opacity,
+    /// Painter's order (default) or seed 000's addition.
+    pub blend: Blend,
+}
+
+impl<'a, const C: usize> AaGradient<'a, C> {
+    /// The fill, by the gradient (nonzero, opaque, painter's order).
+    pub const fn fill(gradient: &'a Gradient<C>) -> Self {
+        Self {
+            gradient,
+            stroke: None,
+            fill_rule: FillRule::NonZero,
+            opacity: Opacity::OPAQUE,
+            blend: Blend::Over,
+        }
+    }
+
+    /// The stroke, `width` px wide (centred, miter joins, butt caps), by
+    /// the gradient.
+    pub const fn stroke(gradient: &'a Gradient<C>, width: u32) -> Self {
+        let mut s = Self::fill(gradient);
+        s.stroke = Some(StrokeStyle::new(
+            width.saturating_mul(crate::geom::FINE_ONE as u32),
+        ));
+        s
+    }
+
+    /// The stroke's geometry (width in 1/1024 px, joins, caps, dashes,
+    /// alignment): a stroke from now on.
+    pub const fn stroke_style(mut self, stroke: StrokeStyle<'a>) -> Self {
+        self.stroke = Some(stroke);
+        self
+    }
+
+    /// The fill rule.
+    pub const fn fill_rule(mut self, rule: FillRule) -> Self {
+        self.fill_rule = rule;
+        self
+    }
+
+    /// The opacity.
+    pub const fn opacity(mut self, opacity: Opacity) -> Self {
+        self.opacity = opacity;
+        self
+    }
+
+    /// How the shape meets what is under it.
+    pub const fn blend(mut self, blend: Blend) -> Self {
+        self.blend = blend;
+        self
+    }
+}
+
+impl<P: AaShape, const C: usize> AaDrawable<C> for Styled<P, AaGradient<'_, C>> {
+    fn draw<D>(&self, canvas: &mut Canvas<'_, '_, C, D>) -> Result<(), DrawError> {
+        let s = &self.style;
+        let shape = self.primitive.shape();
+        match &s.stroke {
+            None => canvas.fill_shape_gradient(&shape, s.gradient, s.fill_rule, s.blend, s.opacity),
+            Some(st) => canvas.stroke_shape_gradient(&shape, st, s.gradient, s.blend, s.opacity),
+        }
     }
 }

@@ -287,6 +287,7 @@ impl<'de> Deserialize<'de> for RadiusValue {
 #[derive(Debug, Clone, Copy)]
 pub struct Paint<'a> {
     pub color: Option<&'a Color>,
+    pub gradient: Option<&'a Spanned<Gradient>>,
     pub fill_rule: Option<&'a Spanned<String>>,
     pub stroke_color: Option<&'a Color>,
     pub stroke_width: Option<&'a Num>,
@@ -308,6 +309,7 @@ macro_rules! shape_table {
         pub struct $name {
             $($(#[$a])* pub $field: $ty,)*
             pub color: Option<Color>,
+            pub gradient: Option<Spanned<Gradient>>,
             pub fill_rule: Option<Spanned<String>>,
             pub stroke_color: Option<Color>,
             pub stroke_width: Option<Num>,
@@ -325,6 +327,7 @@ macro_rules! shape_table {
             pub fn paint(&self) -> Paint<'_> {
                 Paint {
                     color: self.color.as_ref(),
+                    gradient: self.gradient.as_ref(),
                     fill_rule: self.fill_rule.as_ref(),
                     stroke_color: self.stroke_color.as_ref(),
                     stroke_width: self.stroke_width.as_ref(),
@@ -403,4 +406,26 @@ pub struct Mesh {
     pub colors: Option<Colors>,
     pub color: Option<Color>,
     pub opacity: Option<Num>,
+}
+
+/// `gradient = { kind = "linear", from = [x, y], to = [x, y], stops = [...] }`
+/// or `{ kind = "radial", centre = [x, y], radius = r, stops = [...] }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Gradient {
+    pub kind: Spanned<String>,
+    pub from: Option<Nums>,
+    pub to: Option<Nums>,
+    #[serde(alias = "center")]
+    pub centre: Option<Nums>,
+    pub radius: Option<Num>,
+    pub stops: Spanned<Vec<Spanned<GradientStop>>>,
+}
+
+/// `{ offset = 0.5, color = "#ff8000" }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GradientStop {
+    pub offset: Num,
+    pub color: Color,
 }

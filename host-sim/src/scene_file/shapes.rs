@@ -13,6 +13,7 @@
 //! | key | meaning | default |
 //! | --- | --- | --- |
 //! | `color` | the fill's colour | no fill |
+//! | `gradient` | the fill's gradient instead: `{ kind = "linear", from = [x, y], to = [x, y], stops = [...] }` or `{ kind = "radial", centre = [x, y], radius = r, stops = [...] }`, each stop `{ offset = 0..1, color = ... }` (at most 8), interpolated in linear light | none |
 //! | `fill_rule` | `"nonzero"` or `"evenodd"` | `"nonzero"` |
 //! | `stroke_color` | the stroke's colour | no stroke |
 //! | `stroke_width` | px, down to hairlines | 1 |
@@ -30,7 +31,7 @@ use softedge::path::{
     self, svg::SvgPath, CornerRadii, Degrees, LineCap, LineJoin, MiterLimit, StrokeAlignment,
     MAX_DASH_INTERVALS,
 };
-use softedge::style::{FillRule, Opacity};
+use softedge::style::{FillRule, Gradient, Offset, Opacity, Stop, MAX_STOPS};
 use softedge::COORD_LIMIT_PX;
 use toml::Spanned;
 
@@ -123,6 +124,17 @@ impl Checker<'_> {
             Some(c) => Some(self.color::<C>(c, &format!("{field}.color"))?),
             None => None,
         };
+        let gradient = match (p.gradient, fill) {
+            (Some(g), Some(_)) => {
+                return self.err(
+                    g.span(),
+                    &format!("{field}.gradient"),
+                    "give either `color` or `gradient` for the fill, not both",
+                )
+            }
+            (Some(g), None) => Some(self.gradient::<C>(g, &format!("{field}.gradient"))?),
+            (None, _) => None,
+        };
         let rule = self.choice(
             p.fill_rule,
             &format!("{field}.fill_rule"),
@@ -207,20 +219,80 @@ impl Checker<'_> {
                 Some(s)
             }
         };
-        if fill.is_none() && stroke.is_none() {
+        if fill.is_none() && gradient.is_none() && stroke.is_none() {
             return self.err(
                 span,
                 field,
-                "draws nothing: give `color` (the fill), `stroke_color`, or both",
+                "draws nothing: give `color` or `gradient` (the fill), `stroke_color`, or both",
             );
         }
         Ok(ShapeItem {
             geometry,
             fill,
+            gradient,
             rule,
             stroke,
             opacity: self.opacity(p.opacity, &format!("{field}.opacity"))?,
         })
+    }
+
+    /// `gradient = { kind, from, to | centre, radius, stops }`: stops'
+    /// offsets in `0..=1`, never decreasing, their colours as everywhere.
+    fn gradient<const C: usize>(
+        &self,
+        g: &Spanned<raw::Gradient>,
+        field: &str,
+    ) -> Checked<Gradient<C>> {
+        let r = g.get_ref();
+        let list = r.stops.get_ref();
+        if list.is_empty() || list.len() > MAX_STOPS {
+            return self.err(
+                r.stops.span(),
+                &format!("{field}.stops"),
+                format!("a gradient has 1..={MAX_STOPS} stops, not {}", list.len()),
+            );
+        }
+        let mut stops = Vec::with_capacity(list.len());
+        for (k, st) in list.iter().enumerate() {
+            let f = format!("{field}.stops[{k}]");
+            let o = self.num(&st.get_ref().offset, &format!("{f}.offset"), 0.0, 1.0)?;
+            let c = self.color::<C>(&st.get_ref().color, &format!("{f}.color"))?;
+            stops.push(Stop::lin(
+                Offset::from_4096ths((o * 4096.0).round() as u16),
+                c,
+            ));
+        }
+        let need = |v: Option<&raw::Nums>, key: &str| match v {
+            Some(v) => self.fine_point(v, &format!("{field}.{key}")),
+            None => self.err(
+                g.span(),
+                field,
+                format!("this kind of gradient needs `{key}`"),
+            ),
+        };
+        let made = match r.kind.get_ref().as_str() {
+            "linear" => Gradient::linear(
+                need(r.from.as_ref(), "from")?,
+                need(r.to.as_ref(), "to")?,
+                &stops,
+            ),
+            "radial" => {
+                let centre = need(r.centre.as_ref(), "centre")?;
+                let radius = match &r.radius {
+                    Some(v) => self.length(v, &format!("{field}.radius"), MAX_SIZE)?,
+                    None => return self.err(g.span(), field, "a radial gradient needs `radius`"),
+                };
+                Gradient::radial(centre, radius as i32, &stops)
+            }
+            other => {
+                return self.err(
+                    r.kind.span(),
+                    &format!("{field}.kind"),
+                    format!("unknown gradient `{other}`; one of linear, radial"),
+                )
+            }
+        };
+        made.or_else(|e| self.err(r.stops.span(), &format!("{field}.stops"), e.to_string()))
     }
 
     /// A circle's or an arc's centre and radius.
