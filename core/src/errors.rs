@@ -249,9 +249,18 @@ mod render {
             match self {
                 Self::Band(e) => defmt::write!(f, "Band({})", e),
                 Self::Size { frame, display } => {
-                    defmt::write!(f, "Size({}x{} > {}x{})", frame.0, frame.1, display.0, display.1)
+                    defmt::write!(
+                        f,
+                        "Size({}x{} > {}x{})",
+                        frame.0,
+                        frame.1,
+                        display.0,
+                        display.1
+                    )
                 }
-                Self::Draw { band_y0, error } => defmt::write!(f, "Draw(row {}: {})", band_y0, error),
+                Self::Draw { band_y0, error } => {
+                    defmt::write!(f, "Draw(row {}: {})", band_y0, error)
+                }
                 Self::Target(e) => defmt::write!(f, "Target({})", e),
             }
         }

@@ -112,149 +112,170 @@ impl<const C: usize> BandBuffer<'_, C> {
         paint: &Paint<'_, C>,
         op: ComposeOp,
     ) {
+        // One sweep per kind of span, chosen once per shape.
+        let bg = self.background;
+        match (op, paint) {
+            (ComposeOp::Over(a), Paint::Flat(color)) => {
+                let f = color.map(|v| i32::from(v) << COVER_BITS);
+                self.sweep(y_lo, y_hi, rule, a, true, |px, k, whole, _, _| {
+                    if whole {
+                        for p in pixels::<C>(px) {
+                            *p = f;
+                        }
+                    } else {
+                        for p in pixels::<C>(px) {
+                            for ch in 0..C {
+                                p[ch] += mul_share(f[ch] - p[ch], k);
+                            }
+                        }
+                    }
+                });
+            }
+            (ComposeOp::Over(a), Paint::Plane(plane)) => {
+                self.sweep(y_lo, y_hi, rule, a, true, |px, k, whole, x, y| {
+                    let mut v = plane_at(plane, x, y);
+                    for p in pixels::<C>(px) {
+                        for ch in 0..C {
+                            if whole {
+                                p[ch] = v[ch];
+                            } else {
+                                p[ch] += mul_share(v[ch] - p[ch], k);
+                            }
+                            v[ch] = v[ch].saturating_add(plane.gx[ch]);
+                        }
+                    }
+                });
+            }
+            (ComposeOp::Add(a) | ComposeOp::Accumulate(a), Paint::Flat(color)) => {
+                let base = if matches!(op, ComposeOp::Add(_)) {
+                    bg
+                } else {
+                    [0; C]
+                };
+                let diff: [i32; C] =
+                    core::array::from_fn(|ch| i32::from(color[ch]) - i32::from(base[ch]));
+                self.sweep(y_lo, y_hi, rule, a, false, |px, k, _, _, _| {
+                    // (I - bg) k exactly: below 2^12 * 2^16, one product per
+                    // run.
+                    let add: [i32; C] = core::array::from_fn(|ch| diff[ch] * k);
+                    for p in pixels::<C>(px) {
+                        for ch in 0..C {
+                            p[ch] = p[ch].saturating_add(add[ch]);
+                        }
+                    }
+                });
+            }
+            (ComposeOp::Add(a) | ComposeOp::Accumulate(a), Paint::Plane(plane)) => {
+                let base = if matches!(op, ComposeOp::Add(_)) {
+                    bg
+                } else {
+                    [0; C]
+                };
+                let bgf = base.map(|b| i32::from(b) << COVER_BITS);
+                self.sweep(y_lo, y_hi, rule, a, false, |px, k, whole, x, y| {
+                    let mut v = plane_at(plane, x, y);
+                    for p in pixels::<C>(px) {
+                        for ch in 0..C {
+                            let rel = v[ch] - bgf[ch];
+                            let add = if whole { rel } else { mul_share(rel, k) };
+                            p[ch] = p[ch].saturating_add(add);
+                            v[ch] = v[ch].saturating_add(plane.gx[ch]);
+                        }
+                    }
+                });
+            }
+            (ComposeOp::Attenuate(a), _) => {
+                self.sweep(y_lo, y_hi, rule, a, true, |px, k, whole, _, _| {
+                    for p in pixels::<C>(px) {
+                        for ch in 0..C {
+                            p[ch] = if whole {
+                                0
+                            } else {
+                                p[ch] - mul_share(p[ch], k)
+                            };
+                        }
+                    }
+                });
+            }
+        }
+    }
+
+    /// The sweep of rows `y_lo..y_hi`: per row, the running sum of the
+    /// scratch's changes (clearing them) splits the row into runs of one
+    /// coverage; each run with a share is handed to `span` with the
+    /// composite's factor `k` (the share times the opacity, in coverage
+    /// units), whether it is a whole opaque pixel, and the frame pixel of
+    /// its first pixel. `convex`: the share is clamped to `0..=1` px first
+    /// (over, attenuate).
+    #[inline(always)]
+    fn sweep<F: FnMut(&mut [i32], i32, bool, i32, i32)>(
+        &mut self,
+        y_lo: i32,
+        y_hi: i32,
+        rule: Coverage,
+        alpha: Opacity,
+        convex: bool,
+        mut span: F,
+    ) {
         let w = usize::from(self.band.width);
         let x0 = self.band.x0;
-        let bg = self.background;
+        let opaque = alpha.is_opaque();
+        let a4096 = i32::from(alpha.to_4096ths());
         for y in self.rows_in_band(y_lo, y_hi) {
             let r = (y - self.band.y0) as usize;
             let Some(mut row) = take_row(self.cover, r, w) else {
                 continue;
             };
             let (lo, hi) = (row.lo, row.hi);
-            let deltas = &mut *row.deltas;
+            let Some(changes) = row.deltas.get_mut(..=hi) else {
+                continue;
+            };
             let Some(row_acc) = self.acc.get_mut(r * w * C..(r + 1) * w * C) else {
-                deltas.iter_mut().for_each(|d| *d = 0);
+                changes.iter_mut().for_each(|d| *d = 0);
                 continue;
             };
             let mut c: i32 = 0;
             let mut x = lo;
             let mut drawn = (usize::MAX, 0);
-            let changes = deltas.get_mut(..=hi).unwrap_or_default();
-            while x <= hi {
+            loop {
                 if let Some(d) = changes.get_mut(x) {
                     c = c.wrapping_add(core::mem::take(d));
                 }
                 // The run lasts to the next change, or to the band's end if
                 // coverage remains after the last one.
-                let mut next = x + 1;
-                while let Some(&0) = changes.get(next) {
-                    next += 1;
-                }
+                let next = match changes
+                    .get(x + 1..)
+                    .and_then(|t| t.iter().position(|&d| d != 0))
+                {
+                    Some(k) => x + 1 + k,
+                    None => hi + 1,
+                };
                 let end = if next > hi && c != 0 { w } else { next };
                 let s = share(c, rule);
                 if s != 0 {
                     if let Some(px) = row_acc.get_mut(x * C..end * C) {
-                        let fx = x0.saturating_add(x as i32);
-                        run(px, s, fx, y, paint, op, bg);
                         drawn = (drawn.0.min(x), drawn.1.max(end));
+                        // A convex combination needs a share within the pixel.
+                        let s = if convex { s.clamp(0, COVER_ONE) } else { s };
+                        let k = if opaque {
+                            s
+                        } else if s.unsigned_abs() < 1 << (31 - ALPHA_BITS) {
+                            (s * a4096) >> ALPHA_BITS
+                        } else {
+                            ((i64::from(s) * i64::from(a4096)) >> ALPHA_BITS) as i32
+                        };
+                        if k != 0 {
+                            let fx = x0.saturating_add(x as i32);
+                            span(px, k, opaque && s == COVER_ONE, fx, y);
+                        }
                     }
+                }
+                if next > hi {
+                    break;
                 }
                 x = next;
             }
             row.mark(drawn.0, drawn.1);
-        }
-    }
-}
-
-/// Composes one run of pixels `px` (`C` values each) of share `s`, whose
-/// first pixel is frame pixel `(x, y)`.
-#[inline]
-fn run<const C: usize>(
-    px: &mut [i32],
-    s: i32,
-    x: i32,
-    y: i32,
-    paint: &Paint<'_, C>,
-    op: ComposeOp,
-    bg: [u16; C],
-) {
-    let (alpha, s) = match op {
-        ComposeOp::Add(a) | ComposeOp::Accumulate(a) => (a, s),
-        // A convex combination needs a share within the pixel.
-        ComposeOp::Over(a) | ComposeOp::Attenuate(a) => (a, s.clamp(0, COVER_ONE)),
-    };
-    let whole = s == COVER_ONE && alpha.is_opaque();
-    // The share times the opacity, in coverage units (signed for add).
-    let k = if alpha.is_opaque() {
-        s
-    } else {
-        ((i64::from(s) * i64::from(alpha.to_4096ths())) >> ALPHA_BITS) as i32
-    };
-    if k == 0 {
-        return;
-    }
-    match (op, paint) {
-        (ComposeOp::Over(_), Paint::Flat(color)) => {
-            let f = color.map(|v| i32::from(v) << COVER_BITS);
-            if whole {
-                for p in pixels::<C>(px) {
-                    *p = f;
-                }
-            } else {
-                for p in pixels::<C>(px) {
-                    for ch in 0..C {
-                        p[ch] += mul_share(f[ch] - p[ch], k);
-                    }
-                }
-            }
-        }
-        (ComposeOp::Over(_), Paint::Plane(plane)) => {
-            let mut v = plane_at(plane, x, y);
-            for p in pixels::<C>(px) {
-                for ch in 0..C {
-                    if whole {
-                        p[ch] = v[ch];
-                    } else {
-                        p[ch] += mul_share(v[ch] - p[ch], k);
-                    }
-                    v[ch] = v[ch].saturating_add(plane.gx[ch]);
-                }
-            }
-        }
-        (ComposeOp::Add(_) | ComposeOp::Accumulate(_), Paint::Flat(color)) => {
-            // (I - bg) k exactly: below 2^12 * 2^16, one product per run.
-            let base = if matches!(op, ComposeOp::Add(_)) {
-                bg
-            } else {
-                [0; C]
-            };
-            let mut add = [0i32; C];
-            for ch in 0..C {
-                add[ch] = (i32::from(color[ch]) - i32::from(base[ch])) * k;
-            }
-            for p in pixels::<C>(px) {
-                for ch in 0..C {
-                    p[ch] = p[ch].saturating_add(add[ch]);
-                }
-            }
-        }
-        (ComposeOp::Add(_) | ComposeOp::Accumulate(_), Paint::Plane(plane)) => {
-            let mut v = plane_at(plane, x, y);
-            let base = if matches!(op, ComposeOp::Add(_)) {
-                bg
-            } else {
-                [0; C]
-            };
-            let bgf = base.map(|b| i32::from(b) << COVER_BITS);
-            for p in pixels::<C>(px) {
-                for ch in 0..C {
-                    let rel = v[ch] - bgf[ch];
-                    let add = if whole { rel } else { mul_share(rel, k) };
-                    p[ch] = p[ch].saturating_add(add);
-                    v[ch] = v[ch].saturating_add(plane.gx[ch]);
-                }
-            }
-        }
-        (ComposeOp::Attenuate(_), _) => {
-            for p in pixels::<C>(px) {
-                for ch in 0..C {
-                    p[ch] = if whole {
-                        0
-                    } else {
-                        p[ch] - mul_share(p[ch], k)
-                    };
-                }
-            }
         }
     }
 }
@@ -330,17 +351,20 @@ mod tests {
 
     #[test]
     fn over_at_half_coverage_is_the_linear_midpoint() {
-        let mut px = [1000 << COVER_BITS];
-        run(
-            &mut px,
-            COVER_ONE / 2,
+        let (mut acc, mut cover) = ([0i32; 4], [0i32; 12]);
+        let band = crate::band::Band::new(2, 0, 2);
+        let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
+        buf.clear([1000]);
+        buf.add_area(0, 0, COVER_ONE / 2);
+        buf.compose(
             0,
-            0,
+            1,
+            Coverage::Rule(FillRule::NonZero),
             &Paint::Flat([3000]),
             ComposeOp::Over(Opacity::OPAQUE),
-            [0],
         );
-        assert_eq!(px[0], 2000 << COVER_BITS);
+        assert_eq!(buf.lin12(0, 0), Some([2000]));
+        assert_eq!(buf.lin12(1, 0), Some([1000]));
     }
 
     #[test]

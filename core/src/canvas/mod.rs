@@ -274,7 +274,14 @@ impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
             tol: crate::path::Tolerance::DEFAULT,
             bounds: paths::shape_bounds(shape),
         };
-        let r = self.paint_outline(serial, &outline, Coverage::Rule(rule), color, blend, opacity);
+        let r = self.paint_outline(
+            serial,
+            &outline,
+            Coverage::Rule(rule),
+            color,
+            blend,
+            opacity,
+        );
         r.inspect_err(|&e| self.skip(serial, e))
     }
 
@@ -300,7 +307,12 @@ impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
         let nz = Coverage::Rule(FillRule::NonZero);
         let r = self
             .paint_outline(serial, &outline, nz, color, blend, opacity)
-            .and_then(|()| outline.error.get().map_or(Ok(()), |e| Err(DrawError::Stroke(e))));
+            .and_then(|()| {
+                outline
+                    .error
+                    .get()
+                    .map_or(Ok(()), |e| Err(DrawError::Stroke(e)))
+            });
         r.inspect_err(|&e| self.skip(serial, e))
     }
 
@@ -591,17 +603,17 @@ impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
                         .as_deref_mut()
                         .and_then(|c| c.walk(serial, k, p0, p1, tag))
                     {
-                        w.walk(rows.clone(), buf);
+                        w.walk_band(rows.clone(), buf);
                     } else if let Some(mut w) = EdgeWalk::new(p0, p1, mode, cols.clone()) {
                         // Kept only if it goes on below this band.
                         match cache.as_deref_mut() {
                             Some(c) if w.rows().end > rows.end => {
                                 match c.place_walk(serial, k, p0, p1, tag, rows.start, w) {
-                                    Ok(s) => s.walk(rows.clone(), buf),
-                                    Err(mut w) => w.walk(rows.clone(), buf),
+                                    Ok(s) => s.walk_band(rows.clone(), buf),
+                                    Err(mut w) => w.walk_band(rows.clone(), buf),
                                 }
                             }
-                            _ => w.walk(rows.clone(), buf),
+                            _ => w.walk_band(rows.clone(), buf),
                         }
                     }
                 }

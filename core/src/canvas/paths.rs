@@ -109,7 +109,10 @@ impl<S: Shape + ?Sized> Outline for Stroked<'_, '_, S> {
         self.bounds
     }
     fn segments<F: FnMut(FinePoint, FinePoint)>(&self, f: F) {
-        if let Err(e) = self.shape.stroke_with(self.style, self.tol, &mut Segments(f)) {
+        if let Err(e) = self
+            .shape
+            .stroke_with(self.style, self.tol, &mut Segments(f))
+        {
             if self.error.get().is_none() {
                 self.error.set(Some(e));
             }
