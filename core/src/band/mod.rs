@@ -602,6 +602,29 @@ impl crate::edge::DeltaSink for BandDeltas<'_> {
     }
 
     #[inline]
+    fn put2(&mut self, x0: i32, x1: i32, y: i32, d0: i32, d1: i32) {
+        let Some(start) = self.row(y) else {
+            return;
+        };
+        let (c0, c1) = (
+            x0.saturating_sub(self.x0).max(0),
+            x1.saturating_sub(self.x0).max(0),
+        );
+        let (lo, hi) = (c0.min(c1), c0.max(c1));
+        if lo >= self.w {
+            return;
+        }
+        for (c, d) in [(c0, d0), (c1, d1)] {
+            if c < self.w {
+                if let Some(v) = self.cover.get_mut(start + ROW_HEAD + c as usize) {
+                    *v = v.wrapping_add(d);
+                }
+            }
+        }
+        self.widen(start, lo, hi.min(self.w - 1));
+    }
+
+    #[inline]
     fn put_n<const K: usize>(&mut self, x: i32, y: i32, step: i32, d: [i32; K]) {
         let Some(start) = self.row(y) else {
             return;

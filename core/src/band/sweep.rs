@@ -247,8 +247,8 @@ impl<const C: usize> BandBuffer<'_, C> {
 
 /// One row of an opaque flat over (see [`sweep_row`]): the share of a
 /// pixel is its coverage clamped to `0..=1` px (`signed`) or its size
-/// clamped to 1 px (nonzero); whole pixels are stored, partial ones
-/// blended.
+/// clamped to 1 px (nonzero); whole pixels are stored (a tight loop to the
+/// next change), partial ones blended.
 #[inline(never)]
 fn over_flat_row<const C: usize>(
     f: &[i32; C],
@@ -259,44 +259,83 @@ fn over_flat_row<const C: usize>(
 ) -> (usize, usize) {
     let f = *f;
     let n = changes.len();
+    let mut px = px;
     let mut c: i32 = 0;
+    // The share of the pixels from the last change on.
+    let mut s: i32 = 0;
     let (mut first, mut last) = (usize::MAX, 0);
     let mut i = 0;
-    while i < n {
-        if let Some(d) = changes.get_mut(i) {
+    while let Some(d) = changes.get_mut(i) {
+        if *d != 0 {
             c = c.wrapping_add(core::mem::take(d));
-        }
-        let mut j = i + 1;
-        while j < n && changes.get(j) == Some(&0) {
-            j += 1;
-        }
-        let s = if signed {
-            c.clamp(0, COVER_ONE)
-        } else {
-            c.unsigned_abs().min(COVER_ONE as u32) as i32
-        };
-        if s != 0 {
-            let end = if j >= n { tail } else { j };
-            if first == usize::MAX {
+            if s != 0 {
+                last = i;
+            }
+            s = if signed {
+                c.clamp(0, COVER_ONE)
+            } else {
+                c.unsigned_abs().min(COVER_ONE as u32) as i32
+            };
+            if s != 0 && first == usize::MAX {
                 first = i;
             }
-            last = end;
-            let mut run = px.get_mut(i * C..end * C).unwrap_or_default();
-            if s == COVER_ONE {
-                while let Some((p, rest)) = core::mem::take(&mut run).split_first_chunk_mut::<C>() {
-                    *p = f;
-                    run = rest;
-                }
-            } else {
-                while let Some((p, rest)) = core::mem::take(&mut run).split_first_chunk_mut::<C>() {
-                    OverFlat(f).part(p, s, &());
-                    run = rest;
-                }
-            }
         }
-        i = j;
+        let Some((p, rest)) = core::mem::take(&mut px).split_first_chunk_mut::<C>() else {
+            break;
+        };
+        px = rest;
+        i += 1;
+        if s == COVER_ONE {
+            *p = f;
+            // The run's other whole pixels, to the next change (counted
+            // first: a loop bounded by the pixels left would make the
+            // compiler divide their count by C).
+            let mut j = i;
+            while changes.get(j) == Some(&0) {
+                j += 1;
+            }
+            px = fill(core::mem::take(&mut px), &f, j - i);
+            i = j;
+        } else if s != 0 {
+            blend_over(p, &f, s);
+        }
+    }
+    if s != 0 {
+        last = n;
+        // Coverage left after the last change runs to the band's end.
+        while let Some((p, rest)) = core::mem::take(&mut px).split_first_chunk_mut::<C>() {
+            if s == COVER_ONE {
+                *p = f;
+            } else {
+                blend_over(p, &f, s);
+            }
+            px = rest;
+        }
+        last = last.max(tail);
     }
     (first, last)
+}
+
+/// The first `n` pixels of `px` set to the flat colour `f`; the rest of
+/// `px` back (out of line, like [`blend_over`]).
+#[inline(never)]
+fn fill<'p, const C: usize>(px: &'p mut [i32], f: &[i32; C], n: usize) -> &'p mut [i32] {
+    let mut px = px;
+    for _ in 0..n {
+        let Some((p, rest)) = core::mem::take(&mut px).split_first_chunk_mut::<C>() else {
+            break;
+        };
+        *p = *f;
+        px = rest;
+    }
+    px
+}
+
+/// A partly covered pixel of an opaque flat over (out of line: the row
+/// loop keeps its registers).
+#[inline(never)]
+fn blend_over<const C: usize>(p: &mut [i32; C], f: &[i32; C], k: i32) {
+    OverFlat(*f).part(p, k, &());
 }
 
 /// Factors that mark whole pixels of an opaque shape, and a share whose

@@ -9,7 +9,7 @@
 //! near the ends (where set-up asks) the quotient is small and the
 //! division short.
 
-use crate::arith::{divmod_floor, udivmod};
+use crate::arith::{divmod_floor, imul_wide, mul_wide, udivmod};
 use crate::geom::{FinePoint, FINE_BITS, FINE_ONE};
 use crate::{COVER_BITS, COVER_ONE};
 
@@ -146,13 +146,17 @@ impl Canon {
         let u = u.min(self.u1).max(self.u0);
         let t = u - self.u0;
         let du = self.du as u64;
-        if t <= self.du / 2 {
+        if t == 0 {
+            (self.v0, 0)
+        } else if t <= self.du / 2 {
             // v = v0 + t dv / du; t dv <= 2^21 * 2^22.
-            let (q, r) = udivmod(t as u64 * self.dv as u64, du);
+            let (q, r) = udivmod(mul_wide(t as u32, self.dv as u32), du);
             (self.v0 + q as i32, r as i32)
+        } else if u == self.u1 {
+            (self.v1, 0)
         } else {
             // v = v1 - t' dv / du, t' = u1 - u.
-            let (q, r) = udivmod((self.u1 - u) as u64 * self.dv as u64, du);
+            let (q, r) = udivmod(mul_wide((self.u1 - u) as u32, self.dv as u32), du);
             if r == 0 {
                 (self.v1 - q as i32, 0)
             } else {
@@ -171,11 +175,10 @@ impl Canon {
     /// within `N` of the start (`from_end` false) or of the end point, in
     /// coverage-height units (set-up: a quotient below `2^16`).
     pub fn line_near_end(&self, u: i32, from_end: bool) -> Lv {
-        let dv = i64::from(self.dv);
         let du = i64::from(self.du);
         if from_end {
             // H v = H v1 - H t' dv / du, t' = u1 - u; |H t' dv| < 2^(6 + 11 + 22).
-            let (q, r) = divmod_floor((i64::from(self.u1 - u) * dv) << H_BITS, du);
+            let (q, r) = divmod_floor(imul_wide(self.u1 - u, self.dv) << H_BITS, du);
             let vi = (self.v1 << H_BITS) - q as i32;
             if r == 0 {
                 Lv { vi, vr: 0 }
@@ -186,7 +189,7 @@ impl Canon {
                 }
             }
         } else {
-            let (q, r) = divmod_floor((i64::from(u - self.u0) * dv) << H_BITS, du);
+            let (q, r) = divmod_floor(imul_wide(u - self.u0, self.dv) << H_BITS, du);
             Lv {
                 vi: (self.v0 << H_BITS) + q as i32,
                 vr: r as i32,
@@ -213,10 +216,15 @@ impl Canon {
         let (a0, _) = self.columns();
         // (u* - a0 N) dv = (u0 - a0 N) dv + (m N - v0) du >= 0: below
         // 2^10 2^22 + 2^22 2^22 < 2^45.
-        let t = i64::from(self.u0 - a0 * N) * i64::from(self.dv)
-            + (i64::from(m) * i64::from(N) - i64::from(self.v0)) * i64::from(self.du);
+        let dm = (i64::from(m) * i64::from(N) - i64::from(self.v0)).max(0);
+        let t = mul_wide((self.u0 - a0 * N) as u32, self.dv as u32)
+            + if dm <= i64::from(u32::MAX) {
+                mul_wide(dm as u32, self.du as u32)
+            } else {
+                dm as u64 * self.du as u64
+            };
         let ndv = u64::from(N as u32) * self.dv as u64;
-        let (c, xi) = udivmod(t.max(0) as u64, ndv);
+        let (c, xi) = udivmod(t, ndv);
         (a0 + c as i32, xi)
     }
 }

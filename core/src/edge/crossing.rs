@@ -60,7 +60,7 @@
 //! starts at a crossing without a stepped state (the state); stepping adds.
 
 use super::canon::{Canon, N};
-use crate::arith::udivmod;
+use crate::arith::{mul_wide, udivmod};
 use crate::geom::FINE_BITS;
 use crate::COVER_BITS as AREA_BITS;
 
@@ -72,7 +72,6 @@ const _: () = assert!(2 * FINE_BITS + 1 > AREA_BITS);
 const N2_OVER_Z: u64 = 1 << (2 * FINE_BITS - Z_BITS);
 const N_OVER_Z: u64 = 1 << (FINE_BITS - Z_BITS);
 const TWO_N_OVER_Z: u64 = 2 * N_OVER_Z;
-const Z: u64 = 1 << Z_BITS;
 
 /// An exact rational `q + r / d` over a denominator `d` kept elsewhere,
 /// with `0 <= r < d`.
@@ -83,13 +82,23 @@ pub(crate) struct Qr {
 }
 
 impl Qr {
-    /// `num / den` for `den > 0`, the remainder scaled by `scale` so that
-    /// it counts `1 / (den * scale)` (set-up only).
-    fn of(num: u64, den: u64, scale: u64) -> Self {
+    /// `num / den` for `den > 0`, the remainder scaled by `2^shift` so that
+    /// it counts `1 / (den 2^shift)` (set-up only).
+    fn of(num: u64, den: u64, shift: u32) -> Self {
         let (q, r) = udivmod(num, den);
         Self {
             q: q as i32,
-            r: r.saturating_mul(scale),
+            r: r << shift,
+        }
+    }
+
+    /// `num / du` for `du > 0`, the remainder scaled by `Z dv`, so that it
+    /// counts `1 / D` (set-up only; `du, dv <= 2^22`).
+    fn over_du(num: u64, du: u64, dv: u32) -> Self {
+        let (q, r) = udivmod(num, du);
+        Self {
+            q: q as i32,
+            r: mul_wide(r as u32, dv) << Z_BITS,
         }
     }
 
@@ -158,13 +167,14 @@ impl Crossings {
         }
         let (udu, udv) = (du as u64, dv as u64);
         let (cols, rho) = udivmod(udu, udv);
-        let d = (udu * udv) << Z_BITS;
+        let dudv = mul_wide(du as u32, dv as u32);
+        let d = dudv << Z_BITS;
         // c1 = d1² / D = N² rho² / (Z du dv): numerator < 2^(15 + 44).
-        let c1 = Qr::of(N2_OVER_Z * rho * rho, udu * udv, Z);
+        let c1 = Qr::of(N2_OVER_Z * mul_wide(rho as u32, rho as u32), dudv, Z_BITS);
         // m1 = 2 d1 N dv / D = 2 N² rho / (Z du): numerator < 2^(16 + 22).
-        let m1 = Qr::of(2 * N2_OVER_Z * rho, udu, Z * udv);
+        let m1 = Qr::over_du(2 * N2_OVER_Z * rho, udu, dv as u32);
         // cr = (N dv)² / D = N² dv / (Z du): numerator < 2^(15 + 22).
-        let cr = Qr::of(N2_OVER_Z * udv, udu, Z * udv);
+        let cr = Qr::over_du(N2_OVER_Z * udv, udu, dv as u32);
         let k1 = c1.add(c1, d);
         let k2 = k1.sub(m1, d);
         let k3 = k2.sub(m1, d).add(cr, d).add(cr, d);
@@ -186,15 +196,16 @@ impl Crossings {
     /// divisions).
     pub(crate) fn at(&self, e: &Canon, m: i32) -> Crossing {
         let (col, xi) = e.crossing(m);
-        let (udu, udv) = (e.du as u64, e.dv as u64);
-        let rho = self.d1 >> FINE_BITS;
+        let udu = e.du as u64;
+        let rho = (self.d1 >> FINE_BITS) as u32;
         // L = xi² / D: xi < 2^32, so xi² < 2^64.
-        let l = Qr::of(xi * xi, self.d, 1);
+        let l = Qr::of(mul_wide(xi as u32, xi as u32), self.d, 0);
         // A = d1 (2 xi + d1) / D = N rho (2 xi + N rho) / (Z du dv):
         // numerator 2^5 rho (2 xi + d1) < 2^(5 + 22 + 34).
-        let a = Qr::of(N_OVER_Z * rho * (2 * xi + self.d1), udu * udv, Z);
+        let num = 2 * mul_wide(rho, xi as u32) + mul_wide(rho, self.d1 as u32);
+        let a = Qr::of(N_OVER_Z * num, self.d >> Z_BITS, Z_BITS);
         // M = 2 xi N dv / D = 2 N xi / (Z du): numerator < 2^(6 + 32).
-        let mm = Qr::of(TWO_N_OVER_Z * xi, udu, Z * udv);
+        let mm = Qr::over_du(TWO_N_OVER_Z * xi, udu, e.dv as u32);
         // B = (2 xi d2 + d2²) / D = A - M - m1 + cr.
         let b = a.sub(mm, self.d).sub(self.m1, self.d).add(self.cr, self.d);
         Crossing {

@@ -115,6 +115,13 @@ pub(crate) trait DeltaSink {
     /// One change.
     fn put(&mut self, x: i32, y: i32, d: i32);
 
+    /// Two changes in row `y`, at `x0` and `x1` (neighbours).
+    #[inline]
+    fn put2(&mut self, x0: i32, x1: i32, y: i32, d0: i32, d1: i32) {
+        self.put(x0, y, d0);
+        self.put(x1, y, d1);
+    }
+
     /// `K` changes in row `y` at `x`, `x + step`, ... (`step` is `±1`).
     #[inline]
     fn put_n<const K: usize>(&mut self, x: i32, y: i32, step: i32, d: [i32; K]) {

@@ -166,7 +166,7 @@ impl EdgeWalk {
     /// Reports the edge's pixels in frame rows `rows` to `sink`.
     pub fn walk<K: CoverSink>(&mut self, rows: Range<i32>, sink: &mut K) {
         let r = rows.clone();
-        self.walk_into(r, &mut Forward { sink, rows });
+        self.walk_into(r, Forward { sink, rows });
     }
 
     /// Walks frame rows `rows` straight into a band's coverage scratch:
@@ -176,13 +176,13 @@ impl EdgeWalk {
         rows: Range<i32>,
         buf: &mut crate::band::BandBuffer<'_, C>,
     ) {
-        let mut out = buf.deltas(rows.clone());
-        self.walk_into(rows, &mut out);
+        let out = buf.deltas(rows.clone());
+        self.walk_into(rows, out);
     }
 
     /// Writes the edge's changes of running coverage in frame rows `rows`
     /// into `out` (a band's scratch, clipped to the same rows).
-    pub(crate) fn walk_into<S: DeltaSink>(&mut self, rows: Range<i32>, out: &mut S) {
+    pub(crate) fn walk_into<S: DeltaSink>(&mut self, rows: Range<i32>, out: S) {
         if rows.start >= rows.end {
             return;
         }
@@ -403,14 +403,26 @@ impl EdgeWalk {
         } else {
             (a * N, a * N + N)
         };
-        let (mut lo, mut hi) = if self.a0 < self.a1 && a == self.a0 {
+        // The line where the column's part of the edge starts and ends,
+        // exactly: an end point, or a column boundary next to one.
+        let at_u0 = Lv {
+            vi: e.v0 << H_BITS,
+            vr: 0,
+        };
+        let at_u1 = Lv {
+            vi: e.v1 << H_BITS,
+            vr: 0,
+        };
+        let (mut lo, mut hi, ends) = if self.a0 < self.a1 && a == self.a0 {
             // From u <= u0 (the start's cell) to (a0 + 1) N < u1.
-            (self.b0, self.lc0.plus(self.half(), e.du).cell())
+            let q = self.lc0.plus(self.half(), e.du);
+            (self.b0, q.cell(), (e.u0, at_u0, a * N + N, q))
         } else if self.a0 < self.a1 && a == self.a1 {
             // From u0 < a1 N to u >= u1 (the end's cell).
-            (self.lc1.minus(self.half(), e.du).cell(), cell_of(e.v1))
+            let p = self.lc1.minus(self.half(), e.du);
+            (p.cell(), cell_of(e.v1), (a * N, p, e.u1, at_u1))
         } else {
-            (e.cell_at(ulo), e.cell_at(uhi))
+            (e.cell_at(ulo), e.cell_at(uhi), (e.u0, at_u0, e.u1, at_u1))
         };
         if !e.transposed {
             lo = lo.min(self.b1).max(self.b0);
@@ -422,13 +434,16 @@ impl EdgeWalk {
             } else {
                 ((b * N).max(e.v0), (b * N + N).min(e.v1))
             };
-            let area = clamped_area(
-                e,
-                i64::from(ulo),
-                i64::from(uhi),
-                i64::from(vlo),
-                i64::from(vhi),
-            );
+            let area = match trapezoid_area(e, ulo, uhi, vlo, vhi, ends) {
+                Some(area) => area,
+                None => clamped_area(
+                    e,
+                    i64::from(ulo),
+                    i64::from(uhi),
+                    i64::from(vlo),
+                    i64::from(vhi),
+                ),
+            };
             let full = if b >= bc {
                 0
             } else if e.transposed {
@@ -466,7 +481,7 @@ impl EdgeWalk {
     /// mirrored (the pixel right of `-1 - a`); with `w` the winding, a cell
     /// `(a, b)` of canonical area `S` is `+w S` at `pos(a)` and `-w S` at
     /// `pos(a + 1)`, a cover `h` from column `a` on is `+w h` at `pos(a)`.
-    fn x_major<S: DeltaSink, const MIRRORED: bool>(&mut self, rows: Range<i32>, out: &mut S) {
+    fn x_major<S: DeltaSink, const MIRRORED: bool>(&mut self, rows: Range<i32>, mut out: S) {
         let (y0, y1) = (rows.start, rows.end);
         let (b0, b1) = (self.b0, self.b1);
         let lo = y0.max(b0);
@@ -494,13 +509,14 @@ impl EdgeWalk {
         };
         let (mut a, mut prev, mut st, mut x) = (start.a, start.prev, start.st, start.x);
         let mut next: Option<Resume> = None;
-        // The main cell of the column before `a`, still to be taken back at
-        // `pos(a)`: its row and canonical area.
+        // What the last column walked left to add at `pos(a)` of its main
+        // row (the `-S` of its main cell, and of a spill there): the row
+        // and the canonical value.
         let mut pend: Option<(i32, i32)> = None;
         loop {
             if a > self.vb {
                 if let Some((pb, pv)) = pend.take() {
-                    out.put(pos(a), pb, -w * pv);
+                    out.put(pos(a), pb, w * pv);
                 }
                 if a > self.a1 && self.vb == self.a1 {
                     // Past the end: the last rows' covers right of it.
@@ -523,7 +539,7 @@ impl EdgeWalk {
             let is_end = a == self.a0 || a == self.a1;
             if is_end {
                 if let Some((pb, pv)) = pend.take() {
-                    out.put(pos(a), pb, -w * pv);
+                    out.put(pos(a), pb, w * pv);
                 }
                 let bc = self.centre_cell(a);
                 if next.is_none() && self.end_last_cell(a) >= y1 {
@@ -536,10 +552,7 @@ impl EdgeWalk {
                     });
                 }
                 let (pa, pa1) = (pos(a), pos(a + 1));
-                self.end_cells(a, bc, |b, v| {
-                    out.put(pa, b, w * v);
-                    out.put(pa1, b, -w * v);
-                });
+                self.end_cells(a, bc, |b, v| out.put2(pa, pa1, b, w * v, -w * v));
                 // Crossings inside an end column are in its direct areas.
                 self.skip_crossings(&mut x, a);
                 for row in prev.max(lo)..bc.min(hi) {
@@ -555,8 +568,8 @@ impl EdgeWalk {
             }
             // An interior column: first the plain ones, as a run.
             if let (Some(s), Some((pb, pv))) = (st, pend) {
-                if s.a + 1 == a && pb == s.b && pv == s.s {
-                    let x_col = match x {
+                if s.a + 1 == a && pb == s.b {
+                    let x_col = match &x {
                         Next::At(c) => c.col,
                         Next::Done => i32::MAX,
                         Next::Unset => a,
@@ -564,6 +577,9 @@ impl EdgeWalk {
                     let stop = x_col.min(self.a1).min(self.vb.saturating_add(1));
                     if stop > a {
                         let (mut ss, mut r) = (s.s, s.r);
+                        // The first change also takes what the last column
+                        // left (0 after a plain one).
+                        let mut carry = pv + s.s;
                         let (q, rr, du, h) = (self.q, self.rr, self.e.du, s.h);
                         let done = out.run(pos(a), s.b, step_x, stop - a, || {
                             let mut d = q;
@@ -577,7 +593,9 @@ impl EdgeWalk {
                             }
                             ss += d;
                             r = r2;
-                            Some(w * d)
+                            let v = d + carry;
+                            carry = 0;
+                            Some(w * v)
                         });
                         if done > 0 {
                             a += done;
@@ -588,7 +606,7 @@ impl EdgeWalk {
                                 r,
                                 h,
                             });
-                            pend = Some((s.b, ss));
+                            pend = Some((s.b, -ss));
                             continue;
                         }
                     }
@@ -598,11 +616,10 @@ impl EdgeWalk {
             if let Next::Unset = x {
                 x = self.track(a);
             }
-            let here = match (&x, &self.cross) {
-                (Next::At(c), Some(k)) if c.col == a => Some((*c, *k)),
-                _ => None,
+            let (here, down) = match (&x, &self.cross) {
+                (Next::At(c), Some(k)) if c.col == a => (true, !c.is_left(k)),
+                _ => (false, false),
             };
-            let down = here.is_some_and(|(c, k)| !c.is_left(&k));
             let bc = s.b;
             if next.is_none() && bc + i32::from(down) >= y1 {
                 // The first column reaching below this band: the next band
@@ -616,32 +633,55 @@ impl EdgeWalk {
                 });
             }
             let (pa, pa1) = (pos(a), pos(a + 1));
-            // The main cell, merged with the last one's pending change.
+            // The column's changes in rows bc - 1 (`up`), bc (`mid`) and
+            // bc + 1 (`dn`), at `pa` and `pa1`, added up first: the main
+            // cell, what the last column left, the covers of the rows the
+            // line has left (normally just bc - 1), the spill.
+            let (mut up0, mut up1) = (0, 0);
+            let (mut mid0, mut mid1) = (s.s, -s.s);
+            let (mut dn0, mut dn1) = (0, 0);
             match pend {
-                Some((pb, pv)) if pb == bc => out.put(pa, bc, w * (s.s - pv)),
-                Some((pb, pv)) => {
-                    out.put(pa, pb, -w * pv);
-                    out.put(pa, bc, w * s.s);
+                Some((pb, pv)) if pb == bc => mid0 += pv,
+                Some((pb, pv)) if pb == bc - 1 => up0 += pv,
+                Some((pb, pv)) => out.put(pa, pb, w * pv),
+                None => {}
+            }
+            for row in prev..bc {
+                if row == bc - 1 {
+                    up0 += self.row_cover(row);
+                } else if row >= lo && row < hi {
+                    out.put(pa, row, w * self.row_cover(row));
                 }
-                None => out.put(pa, bc, w * s.s),
             }
-            pend = Some((bc, s.s));
-            if let Some((mut c, k)) = here {
-                // The spill: taken from the cell above the boundary, given
-                // to the one below.
-                let t = c.spill(&k);
-                if t != 0 {
-                    out.put(pa, c.m - 1, -w * t);
-                    out.put(pa1, c.m - 1, w * t);
-                    out.put(pa, c.m, w * t);
-                    out.put(pa1, c.m, -w * t);
+            if here {
+                if let (Next::At(c), Some(k)) = (&mut x, &self.cross) {
+                    // The spill: taken from the cell above the boundary,
+                    // given to the one below.
+                    let t = c.spill(k);
+                    if down {
+                        // Boundary bc + 1.
+                        mid0 -= t;
+                        mid1 += t;
+                        dn0 += t;
+                        dn1 -= t;
+                    } else {
+                        // Boundary bc.
+                        up0 -= t;
+                        up1 += t;
+                        mid0 += t;
+                        mid1 -= t;
+                    }
+                    c.advance(k);
                 }
-                c.advance(&k);
-                x = Next::At(c);
             }
-            for row in prev.max(lo)..bc.min(hi) {
-                out.put(pa, row, w * self.row_cover(row));
+            if up0 != 0 || up1 != 0 {
+                out.put2(pa, pa1, bc - 1, w * up0, w * up1);
             }
+            out.put(pa, bc, w * mid0);
+            if dn0 != 0 || dn1 != 0 {
+                out.put2(pa, pa1, bc + 1, w * dn0, w * dn1);
+            }
+            pend = Some((bc, mid1));
             prev = prev.max(bc);
             st = Some(s);
             if bc >= y1 {
@@ -685,7 +725,7 @@ impl EdgeWalk {
     /// boundary `b`), a cell `(a, b)` of canonical area `S` is `-w S` at
     /// `mpos(b)` and `+w S` at `mpos(b + 1)` of row `a`, the row's cover
     /// `+w h` at `mpos(bc)`.
-    fn y_major<S: DeltaSink>(&mut self, rows: Range<i32>, out: &mut S) {
+    fn y_major<S: DeltaSink>(&mut self, rows: Range<i32>, mut out: S) {
         let lo = rows.start.max(self.a0);
         let hi = rows.end.min(self.a1 + 1);
         if lo >= hi {
@@ -751,4 +791,42 @@ impl EdgeWalk {
             x,
         });
     }
+}
+
+/// [`clamped_area`] of cell `[ulo, uhi] x [vlo, vhi]` of an end column
+/// when the line stays inside the cell's rows where it is inside the edge
+/// (`ends`: the line's exact points `(p, Vp)`, `(q, Vq)` at the start and
+/// end of that part, in coverage-height units): then the area is a
+/// trapezoid and the flat extensions, over the one denominator `du`, and
+/// its floor takes one short 32-bit division (a quotient below `2^11`)
+/// instead of the general case's 64-bit ones. `None` when the line leaves
+/// the rows (the general case).
+///
+/// With `I = Vp + Vq - 2 H vlo` split as `vi + vr / du`, the area in fine
+/// units² is `(q - p) (vi + vr / du) / (2 H) + flat`, so in coverage units
+/// (`/ 16`) `floor(((q - p) vi + 2 H flat + floor((q - p) vr / du)) / 32 H)`:
+/// `(q - p) <= 2^10`, `vi <= 2^17`, `flat <= 2^20`, `vr < 2 du`.
+fn trapezoid_area(
+    e: &Canon,
+    ulo: i32,
+    uhi: i32,
+    vlo: i32,
+    vhi: i32,
+    (p, vp, q, vq): (i32, Lv, i32, Lv),
+) -> Option<i32> {
+    let h = vhi - vlo;
+    let (hlo, hhi) = (vlo << H_BITS, vhi << H_BITS);
+    // Inside the rows at both ends (the line is monotone between them).
+    let inside = vp.vi >= hlo && (vq.vi < hhi || (vq.vi == hhi && vq.vr == 0));
+    if h <= 0 || q <= p || !inside || e.du >= 1 << 21 {
+        return None;
+    }
+    let len = (q - p) as u32;
+    let flat = (e.u0 - ulo).max(0) * (e.v0 - vlo).min(h).max(0)
+        + (uhi - e.u1).max(0) * (e.v1 - vlo).min(h).max(0);
+    let vi = (vp.vi + vq.vi - 2 * hlo) as u32;
+    // (q - p) (vr_p + vr_q) < 2^10 2^22: a u32 (du < 2^21).
+    let (fq, _) = udivmod(u64::from(len * (vp.vr + vq.vr) as u32), e.du as u64);
+    let num = len * vi + ((flat as u32) << (H_BITS + 1)) + fq as u32;
+    Some((num >> (H_BITS + 1 + 2 * crate::geom::FINE_BITS - COVER_BITS)) as i32)
 }
