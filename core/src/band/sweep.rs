@@ -317,18 +317,19 @@ fn over_flat_row<const C: usize>(
 }
 
 /// The first `n` pixels of `px` set to the flat colour `f`; the rest of
-/// `px` back (out of line, like [`blend_over`]).
+/// `px` back (out of line, like [`blend_over`]). Indexed by values, not by
+/// a loop over chunks, whose trip count the compiler would find by dividing
+/// by `C`.
 #[inline(never)]
 fn fill<'p, const C: usize>(px: &'p mut [i32], f: &[i32; C], n: usize) -> &'p mut [i32] {
-    let mut px = px;
-    for _ in 0..n {
-        let Some((p, rest)) = core::mem::take(&mut px).split_first_chunk_mut::<C>() else {
-            break;
-        };
-        *p = *f;
-        px = rest;
+    let end = (n * C).min(px.len());
+    let (run, rest) = px.split_at_mut(end);
+    for k in 0..n {
+        if let Some(p) = run.get_mut(k * C..k * C + C) {
+            p.copy_from_slice(f);
+        }
     }
-    px
+    rest
 }
 
 /// A partly covered pixel of an opaque flat over (out of line: the row

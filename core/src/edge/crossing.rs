@@ -65,7 +65,7 @@ use crate::geom::FINE_BITS;
 use crate::COVER_BITS as AREA_BITS;
 
 /// `log2(Z)`, `Z = 2 N² / AREA_ONE`: the spill's denominator is `Z du dv`.
-const Z_BITS: u32 = 2 * FINE_BITS + 1 - AREA_BITS;
+pub(crate) const Z_BITS: u32 = 2 * FINE_BITS + 1 - AREA_BITS;
 const _: () = assert!(2 * FINE_BITS + 1 > AREA_BITS);
 /// `N² / Z`, `N / Z` and `2 N / Z`, the factors the set-up numerators
 /// reduce to.

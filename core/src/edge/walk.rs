@@ -15,7 +15,7 @@ use super::area::clamped_area;
 use super::canon::{cell_of, Canon, Lv, H_BITS, N};
 use super::crossing::{Crossing, Crossings};
 use super::{AreaMode, CoverSink, DeltaSink, Forward};
-use crate::arith::udivmod;
+use crate::arith::{mul_wide, udivmod};
 use crate::{COVER_BITS, COVER_ONE};
 
 /// A whole pixel of coverage.
@@ -50,6 +50,52 @@ enum Next {
     Done,
     /// The next crossing at or after the walk's column.
     At(Crossing),
+    /// The last interior crossing, evaluated directly: its column, its
+    /// spill (area units), and whether the line leaves the row there (the
+    /// crossing lies right of the column centre).
+    One { col: i32, t: i32, down: bool },
+}
+
+impl Next {
+    /// The column of the next crossing (`i32::MAX` if none).
+    #[inline]
+    fn col(&self) -> i32 {
+        match self {
+            Next::At(c) => c.col,
+            Next::One { col, .. } => *col,
+            Next::Done | Next::Unset => i32::MAX,
+        }
+    }
+
+    /// The crossing in column `a`, if any: whether the line leaves the
+    /// row there.
+    #[inline]
+    fn down_at(&self, a: i32, cross: &Option<Crossings>) -> Option<bool> {
+        match (self, cross) {
+            (Next::At(c), Some(k)) if c.col == a => Some(!c.is_left(k)),
+            (Next::One { col, down, .. }, _) if *col == a => Some(*down),
+            _ => None,
+        }
+    }
+
+    /// The spill of the crossing in column `a` (see
+    /// [`down_at`](Self::down_at)), and on to the next crossing.
+    #[inline]
+    fn take_spill(&mut self, cross: &Option<Crossings>) -> i32 {
+        match (&mut *self, cross) {
+            (Next::At(c), Some(k)) => {
+                let t = c.spill(k);
+                c.advance(k);
+                t
+            }
+            (Next::One { t, .. }, _) => {
+                let t = *t;
+                *self = Next::Done;
+                t
+            }
+            _ => 0,
+        }
+    }
 }
 
 /// Where a walk stopped, so that the next band's walk resumes there
@@ -339,6 +385,23 @@ impl EdgeWalk {
         if m > self.last_boundary() || m >= end {
             return Next::Done;
         }
+        if m + 1 == end {
+            // One crossing left: evaluated directly (two divisions), no
+            // stepping constants. x = xi or N dv - xi (below 2^32), the
+            // spill x² / D.
+            let e = &self.e;
+            let (col, xi) = e.crossing(m);
+            let ndv = u64::from(N as u32) * e.dv as u64;
+            let left = 2 * xi <= ndv;
+            let x = if left { xi } else { ndv - xi } as u32;
+            let d = mul_wide(e.du as u32, e.dv as u32) << crate::edge::crossing::Z_BITS;
+            let (t, _) = udivmod(mul_wide(x, x), d);
+            return Next::One {
+                col,
+                t: t as i32,
+                down: !left,
+            };
+        }
         let k = match self.cross {
             Some(k) => k,
             None => match Crossings::new(self.e.du, self.e.dv) {
@@ -352,10 +415,14 @@ impl EdgeWalk {
     /// Moves the tracker past the crossings in columns up to `a` (an end
     /// column: its crossings are in its direct areas).
     fn skip_crossings(&self, x: &mut Next, a: i32) {
-        if let (Next::At(c), Some(k)) = (x, &self.cross) {
-            while c.col <= a && c.m <= self.last_boundary() {
-                c.advance(k);
+        match (&mut *x, &self.cross) {
+            (Next::At(c), Some(k)) => {
+                while c.col <= a && c.m <= self.last_boundary() {
+                    c.advance(k);
+                }
             }
+            (Next::One { col, .. }, _) if *col <= a => *x = Next::Done,
+            _ => {}
         }
     }
 
@@ -570,9 +637,8 @@ impl EdgeWalk {
             if let (Some(s), Some((pb, pv))) = (st, pend) {
                 if s.a + 1 == a && pb == s.b {
                     let x_col = match &x {
-                        Next::At(c) => c.col,
-                        Next::Done => i32::MAX,
                         Next::Unset => a,
+                        x => x.col(),
                     };
                     let stop = x_col.min(self.a1).min(self.vb.saturating_add(1));
                     if stop > a {
@@ -616,9 +682,9 @@ impl EdgeWalk {
             if let Next::Unset = x {
                 x = self.track(a);
             }
-            let (here, down) = match (&x, &self.cross) {
-                (Next::At(c), Some(k)) if c.col == a => (true, !c.is_left(k)),
-                _ => (false, false),
+            let (here, down) = match x.down_at(a, &self.cross) {
+                Some(down) => (true, down),
+                None => (false, false),
             };
             let bc = s.b;
             if next.is_none() && bc + i32::from(down) >= y1 {
@@ -654,24 +720,21 @@ impl EdgeWalk {
                 }
             }
             if here {
-                if let (Next::At(c), Some(k)) = (&mut x, &self.cross) {
-                    // The spill: taken from the cell above the boundary,
-                    // given to the one below.
-                    let t = c.spill(k);
-                    if down {
-                        // Boundary bc + 1.
-                        mid0 -= t;
-                        mid1 += t;
-                        dn0 += t;
-                        dn1 -= t;
-                    } else {
-                        // Boundary bc.
-                        up0 -= t;
-                        up1 += t;
-                        mid0 += t;
-                        mid1 -= t;
-                    }
-                    c.advance(k);
+                // The spill: taken from the cell above the boundary, given
+                // to the one below.
+                let t = x.take_spill(&self.cross);
+                if down {
+                    // Boundary bc + 1.
+                    mid0 -= t;
+                    mid1 += t;
+                    dn0 += t;
+                    dn1 -= t;
+                } else {
+                    // Boundary bc.
+                    up0 -= t;
+                    up1 += t;
+                    mid0 += t;
+                    mid1 -= t;
                 }
             }
             if up0 != 0 || up1 != 0 {
@@ -757,12 +820,10 @@ impl EdgeWalk {
                 x = self.track(a);
             }
             let bc = s.b;
-            match (&mut x, &self.cross) {
-                (Next::At(c), Some(k)) if c.col == a => {
-                    let t = c.spill(k);
-                    let left = c.is_left(k);
-                    c.advance(k);
-                    if left {
+            match x.down_at(a, &self.cross) {
+                Some(down) => {
+                    let t = x.take_spill(&self.cross);
+                    if !down {
                         // m = bc: (m - 1, -t), (m, S + t).
                         out.put_n(
                             mpos(bc - 1),
@@ -780,7 +841,7 @@ impl EdgeWalk {
                         );
                     }
                 }
-                _ => out.put_n(mpos(bc), a, step_x, [w * (ONE - s.s), w * s.s]),
+                None => out.put_n(mpos(bc), a, step_x, [w * (ONE - s.s), w * s.s]),
             }
         }
         self.resume = Some(Resume {
