@@ -55,6 +55,29 @@ pub(crate) fn udivmod(n: u64, d: u64) -> (u64, u64) {
     }
 }
 
+/// `a * b` in full, `u32 x u32 -> u64`, from four 16-bit products: the
+/// Cortex-M0's multiply keeps the low 32 bits only, and a 64-bit product is
+/// a library call several times longer.
+#[inline]
+pub(crate) fn mul_wide(a: u32, b: u32) -> u64 {
+    let (a0, a1) = (a & 0xffff, a >> 16);
+    let (b0, b1) = (b & 0xffff, b >> 16);
+    // Each partial product is below 2^32; the middle sum below 2^33.
+    let mid = u64::from(a0 * b1) + u64::from(a1 * b0);
+    (u64::from(a1 * b1) << 32) + (mid << 16) + u64::from(a0 * b0)
+}
+
+/// `a * b` in full for signed `a`, `b` (see [`mul_wide`]).
+#[inline]
+pub(crate) fn imul_wide(a: i32, b: i32) -> i64 {
+    let p = mul_wide(a.unsigned_abs(), b.unsigned_abs()) as i64;
+    if (a < 0) != (b < 0) {
+        -p
+    } else {
+        p
+    }
+}
+
 /// `ceil(n / d)` for `d > 0`; 0 if `d == 0`.
 #[inline]
 pub(crate) fn div_ceil(n: i64, d: i64) -> i64 {
@@ -98,6 +121,20 @@ mod tests {
             }
         }
         assert_eq!(udivmod(5, 0), (0, 0));
+    }
+
+    #[test]
+    fn wide_products_are_exact() {
+        for a in [0u32, 1, 3, 0xffff, 0x1_0000, 0x1234_5678, u32::MAX] {
+            for b in [0u32, 1, 7, 0xffff, 0xfffe_0001, u32::MAX] {
+                assert_eq!(mul_wide(a, b), u64::from(a) * u64::from(b));
+            }
+        }
+        for a in [0i32, -1, 5, -77_777, i32::MAX, i32::MIN + 1] {
+            for b in [0i32, 1, -3, 1 << 22, -(1 << 21)] {
+                assert_eq!(imul_wide(a, b), i64::from(a) * i64::from(b));
+            }
+        }
     }
 
     #[test]

@@ -71,48 +71,26 @@ pub fn sub_points(v: &[(i64, i64)]) -> Vec<SubPoint> {
         .collect()
 }
 
-/// One reported edge cell.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Cell {
-    /// Pixel column.
-    pub x: i32,
-    /// Pixel row.
-    pub y: i32,
-    /// Signed coverage, 1/65536 px.
-    pub coverage: i32,
-}
-
 /// Records everything an edge walk reports.
 #[derive(Debug, Clone, Default)]
 pub struct Recorder {
-    /// Cells in the order reported.
-    pub cells: Vec<Cell>,
     /// Cover changes `(x, y, delta)` in the order reported.
     pub covers: Vec<(i32, i32, i32)>,
 }
 
 impl CoverSink for Recorder {
-    fn cell(&mut self, x: i32, y: i32, coverage: i32) {
-        self.cells.push(Cell { x, y, coverage });
-    }
     fn cover(&mut self, x: i32, y: i32, delta: i32) {
         self.covers.push((x, y, delta));
     }
 }
 
 impl Recorder {
-    /// The walk's signed area per pixel: `Σ cells at (x, y) + Σ cover deltas
-    /// at columns <= x of row y`, for `x` in `x_lo..=x_hi`, per row that the
+    /// The walk's signed area per pixel: `Σ cover deltas at columns <= x
+    /// of row y`, for `x` in `x_lo..=x_hi`, per row that the
     /// walk mentions. Returned as `row -> areas[x - x_lo]`.
     pub fn areas(&self, x_lo: i32, x_hi: i32) -> BTreeMap<i32, Vec<i64>> {
         let mut rows: BTreeMap<i32, Vec<i64>> = BTreeMap::new();
         let width = (x_hi - x_lo + 1) as usize;
-        for c in &self.cells {
-            let row = rows.entry(c.y).or_insert_with(|| vec![0; width]);
-            if c.x >= x_lo && c.x <= x_hi {
-                row[(c.x - x_lo) as usize] += i64::from(c.coverage);
-            }
-        }
         let mut deltas: BTreeMap<i32, Vec<i64>> = BTreeMap::new();
         for &(x, y, d) in &self.covers {
             rows.entry(y).or_insert_with(|| vec![0; width]);

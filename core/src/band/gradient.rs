@@ -73,7 +73,7 @@
 //! Arithmetic that could leave its range for pixels beyond it wraps (no
 //! panic; such pixels hold no shape).
 
-use super::sweep::{mul_share, pixels, ComposeOp};
+use super::sweep::{mul_share, ComposeOp};
 use crate::geom::FINE_BITS;
 use crate::style::gradient::{LinearRamp, RadialRamp, Ramp, MAX_STOPS, RADIAL_BITS, T_BITS};
 use crate::style::Gradient;
@@ -583,6 +583,25 @@ fn radial<const C: usize, A: Apply<C>>(
         }
         rest = more;
         t.advance(ramp, A::BIAS);
+    }
+}
+
+/// The pixels of a run, `C` values each. (`chunks_exact` would divide the
+/// run's length by `C`: a library call on the Cortex-M0.)
+#[inline]
+fn pixels<const C: usize>(px: &mut [i32]) -> Pixels<'_, C> {
+    Pixels(px)
+}
+
+struct Pixels<'p, const C: usize>(&'p mut [i32]);
+
+impl<'p, const C: usize> Iterator for Pixels<'p, C> {
+    type Item = &'p mut [i32; C];
+    #[inline]
+    fn next(&mut self) -> Option<Self::Item> {
+        let (p, rest) = core::mem::take(&mut self.0).split_first_chunk_mut::<C>()?;
+        self.0 = rest;
+        Some(p)
     }
 }
 

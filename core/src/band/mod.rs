@@ -71,10 +71,22 @@ use crate::COVER_BITS;
 /// Largest band width and frame height handled, in pixels.
 pub const MAX_WIDTH: u16 = 2048;
 
-/// Per row of the scratch, after its `width` cover changes: their extent
-/// (`lo`, `hi`) and the extent of the row's drawn pixels (`dirty_lo`,
-/// `dirty_hi`, half-open).
-const ROW_EXTRA: usize = 4;
+/// Per row of the scratch, before its `width` cover changes: their extent
+/// (`lo`, `hi`, inclusive) and the extent of the row's drawn pixels
+/// (`dirty_lo`, `dirty_hi`, half-open).
+const ROW_HEAD: usize = 4;
+/// Extra `i32`s per row of the scratch.
+const ROW_EXTRA: usize = ROW_HEAD;
+/// Offsets in a row's head.
+const LO: usize = 0;
+const HI: usize = 1;
+const DIRTY_LO: usize = 2;
+
+/// Start of row `r` of the scratch of a band `w` wide.
+#[inline]
+const fn row_start(r: usize, w: usize) -> usize {
+    r * (w + ROW_EXTRA)
+}
 
 /// One band: the frame rows `[y0, y0 + rows)`, columns `[x0, x0 + width)`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -278,7 +290,7 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         }
         let w = usize::from(self.band.width);
         for r in 0..usize::from(self.band.rows) {
-            let at = r * (w + ROW_EXTRA) + w + 2;
+            let at = row_start(r, w) + DIRTY_LO;
             if let Some([dlo, dhi]) = self.cover.get_mut(at..at + 2) {
                 (*dlo, *dhi) = (0, 0);
             }
@@ -378,8 +390,8 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         }
         let c = c.max(0) as usize;
         let w = w as usize;
-        let start = r as usize * (w + ROW_EXTRA);
-        if let Some([deltas @ .., lo, hi, _, _]) = self.cover.get_mut(start..start + w + ROW_EXTRA)
+        let start = row_start(r as usize, w);
+        if let Some([lo, hi, _, _, deltas @ ..]) = self.cover.get_mut(start..start + w + ROW_EXTRA)
         {
             if let Some(d) = deltas.get_mut(c) {
                 *d = d.wrapping_add(delta);
@@ -391,7 +403,7 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
 
     /// Records an edge pixel's area as a pair of cover changes: `+area` at
     /// the pixel, `-area` right of it (dropped at the band's right end).
-    #[inline]
+    #[cfg(test)]
     pub(crate) fn add_area(&mut self, x: i32, y: i32, area: i32) {
         let w = i32::from(self.band.width);
         let r = y.wrapping_sub(self.band.y0);
@@ -400,8 +412,8 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
             return;
         }
         let (c, w) = (c as usize, w as usize);
-        let start = r as usize * (w + ROW_EXTRA);
-        if let Some([deltas @ .., lo, hi, _, _]) = self.cover.get_mut(start..start + w + ROW_EXTRA)
+        let start = row_start(r as usize, w);
+        if let Some([lo, hi, _, _, deltas @ ..]) = self.cover.get_mut(start..start + w + ROW_EXTRA)
         {
             if let Some(d) = deltas.get_mut(c) {
                 *d = d.wrapping_add(area);
@@ -420,8 +432,8 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
     /// Empties row `r` of the cover scratch and its extents.
     fn reset_row(&mut self, r: usize) {
         let w = usize::from(self.band.width);
-        let start = r * (w + ROW_EXTRA);
-        if let Some([deltas @ .., lo, hi, dlo, dhi]) =
+        let start = row_start(r, w);
+        if let Some([lo, hi, dlo, dhi, deltas @ ..]) =
             self.cover.get_mut(start..start + w + ROW_EXTRA)
         {
             deltas.iter_mut().for_each(|c| *c = 0);
@@ -446,8 +458,8 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         buf.background = background.map(|v| v.min(LIN_MAX));
         let w = usize::from(band.width);
         for r in 0..usize::from(band.rows) {
-            let start = r * (w + ROW_EXTRA) + w;
-            if let Some([lo, hi, dlo, dhi]) = buf.cover.get_mut(start..start + ROW_EXTRA) {
+            let start = row_start(r, w);
+            if let Some([lo, hi, dlo, dhi]) = buf.cover.get_mut(start..start + ROW_HEAD) {
                 *lo = i32::MAX;
                 *hi = i32::MIN;
                 (*dlo, *dhi) = (0, 0);
@@ -460,7 +472,7 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
     #[inline]
     fn mark(&mut self, r: usize, lo: usize, hi: usize) {
         let w = usize::from(self.band.width);
-        let at = r * (w + ROW_EXTRA) + w + 2;
+        let at = row_start(r, w) + DIRTY_LO;
         if let Some([dlo, dhi]) = self.cover.get_mut(at..at + 2) {
             let (lo, hi) = (lo as i32, hi as i32);
             if *dlo >= *dhi {
@@ -519,7 +531,7 @@ impl DrawnExtents<'_> {
         let Ok(r) = usize::try_from(y.wrapping_sub(self.y0)) else {
             return 0..0;
         };
-        let at = r * (w + ROW_EXTRA) + w + 2;
+        let at = row_start(r, w) + DIRTY_LO;
         match self.cover.get_mut(at..at + 2) {
             Some([dlo, dhi]) => {
                 let out = (*dlo).clamp(0, w as i32) as u16..(*dhi).clamp(0, w as i32) as u16;
@@ -531,12 +543,170 @@ impl DrawnExtents<'_> {
     }
 }
 
+/// The scratch as an edge walk writes it ([`EdgeWalk::walk_into`]):
+/// changes of the running coverage of the frame rows `y_first..y_first +
+/// n` (the walk's rows, clipped to the band); rows outside are dropped,
+/// columns left of the band apply from its first, right of it are dropped.
+///
+/// [`EdgeWalk::walk_into`]: crate::edge::EdgeWalk
+pub(crate) struct BandDeltas<'s> {
+    cover: &'s mut [i32],
+    w: i32,
+    x0: i32,
+    y_first: i32,
+    n: u32,
+    /// Band row of `y_first`.
+    r_first: usize,
+}
+
+impl<const C: usize> BandBuffer<'_, C> {
+    /// The scratch rows `rows` (clipped to the band) for an edge walk.
+    pub(crate) fn deltas(&mut self, rows: core::ops::Range<i32>) -> BandDeltas<'_> {
+        let r = self.rows_in_band(rows.start, rows.end);
+        BandDeltas {
+            cover: &mut *self.cover,
+            w: i32::from(self.band.width),
+            x0: self.band.x0,
+            y_first: r.start,
+            n: (r.end - r.start).max(0) as u32,
+            r_first: (r.start - self.band.y0).max(0) as usize,
+        }
+    }
+}
+
+impl BandDeltas<'_> {
+    /// The start of frame row `y`'s scratch row, if the walk writes it.
+    #[inline]
+    fn row(&self, y: i32) -> Option<usize> {
+        let k = y.wrapping_sub(self.y_first) as u32;
+        (k < self.n).then(|| row_start(self.r_first + k as usize, self.w as usize))
+    }
+
+    /// Widens row `start`'s extent of changes to columns `lo..=hi`.
+    #[inline]
+    fn widen(&mut self, start: usize, lo: i32, hi: i32) {
+        if let Some([l, h]) = self.cover.get_mut(start + LO..start + HI + 1) {
+            *l = (*l).min(lo);
+            *h = (*h).max(hi);
+        }
+    }
+}
+
+impl crate::edge::DeltaSink for BandDeltas<'_> {
+    #[inline]
+    fn put(&mut self, x: i32, y: i32, d: i32) {
+        let Some(start) = self.row(y) else {
+            return;
+        };
+        let c = x.saturating_sub(self.x0).max(0);
+        if c >= self.w {
+            return;
+        }
+        if let Some(v) = self.cover.get_mut(start + ROW_HEAD + c as usize) {
+            *v = v.wrapping_add(d);
+        }
+        self.widen(start, c, c);
+    }
+
+    #[inline]
+    fn put2(&mut self, x0: i32, x1: i32, y: i32, d0: i32, d1: i32) {
+        let Some(start) = self.row(y) else {
+            return;
+        };
+        let (c0, c1) = (
+            x0.saturating_sub(self.x0).max(0),
+            x1.saturating_sub(self.x0).max(0),
+        );
+        let (lo, hi) = (c0.min(c1), c0.max(c1));
+        if lo >= self.w {
+            return;
+        }
+        for (c, d) in [(c0, d0), (c1, d1)] {
+            if c < self.w {
+                if let Some(v) = self.cover.get_mut(start + ROW_HEAD + c as usize) {
+                    *v = v.wrapping_add(d);
+                }
+            }
+        }
+        self.widen(start, lo, hi.min(self.w - 1));
+    }
+
+    #[inline]
+    fn put_n<const K: usize>(&mut self, x: i32, y: i32, step: i32, d: [i32; K]) {
+        let Some(start) = self.row(y) else {
+            return;
+        };
+        let (mut lo, mut hi) = (i32::MAX, i32::MIN);
+        let mut c = x.saturating_sub(self.x0);
+        for v in d {
+            let k = c.max(0);
+            if k < self.w {
+                if let Some(e) = self.cover.get_mut(start + ROW_HEAD + k as usize) {
+                    *e = e.wrapping_add(v);
+                }
+                lo = lo.min(k);
+                hi = hi.max(k);
+            }
+            c = c.saturating_add(step);
+        }
+        self.widen(start, lo, hi);
+    }
+
+    #[inline]
+    fn run<F: FnMut() -> Option<i32>>(
+        &mut self,
+        x: i32,
+        y: i32,
+        step: i32,
+        n: i32,
+        mut f: F,
+    ) -> i32 {
+        let c0 = x.saturating_sub(self.x0);
+        let (Some(start), true) = (self.row(y), c0 >= 0 && c0 <= self.w) else {
+            // Outside (or, never for the walker's runs, not in the band's
+            // columns): steps only, or one change at a time.
+            let mut x = x;
+            for k in 0..n {
+                let Some(d) = f() else {
+                    return k;
+                };
+                if self.row(y).is_some() {
+                    self.put(x, y, d);
+                }
+                x = x.saturating_add(step);
+            }
+            return n.max(0);
+        };
+        // The row's changes: the run's columns are within the walk's,
+        // `0..=w` here; a change at `w` (the `-S` of a cell in the band's
+        // last column, mirrored) falls off the slice, dropped.
+        let w = self.w as usize;
+        let Some(cells) = self.cover.get_mut(start + ROW_HEAD..start + ROW_HEAD + w) else {
+            return 0;
+        };
+        let mut c = c0 as usize;
+        let mut k = 0;
+        while k < n {
+            let Some(d) = f() else {
+                break;
+            };
+            if let Some(e) = cells.get_mut(c) {
+                *e = e.wrapping_add(d);
+            }
+            c = c.wrapping_add(step as usize);
+            k += 1;
+        }
+        if k > 0 {
+            let last = c0 + step * (k - 1);
+            let (lo, hi) = (c0.min(last), c0.max(last).min(self.w - 1));
+            self.widen(start, lo, hi);
+        }
+        k
+    }
+}
+
 /// The walker's reports go straight into the scratch.
 impl<const C: usize> crate::edge::CoverSink for BandBuffer<'_, C> {
-    #[inline]
-    fn cell(&mut self, x: i32, y: i32, area: i32) {
-        self.add_area(x, y, area);
-    }
     #[inline]
     fn cover(&mut self, x: i32, y: i32, delta: i32) {
         self.add_cover(x, y, delta);
@@ -549,10 +719,9 @@ impl<const C: usize> crate::edge::CoverSink for BandBuffer<'_, C> {
 /// when the row has no changes. Events were clamped into the band at
 /// insertion, so `0 <= lo <= hi < w`.
 fn take_row(cover: &mut [i32], r: usize, w: usize) -> Option<SweepRow<'_>> {
-    let start = r * (w + ROW_EXTRA);
-    let row = cover.get_mut(start..start + w + ROW_EXTRA)?;
-    let (deltas, ext) = row.split_at_mut(w);
-    let [lo, hi, dlo, dhi] = ext else {
+    let start = row_start(r, w);
+    let row = cover.get_mut(start..start + w + ROW_HEAD)?;
+    let [lo, hi, dlo, dhi, deltas @ ..] = row else {
         return None;
     };
     let (l, h) = (

@@ -114,170 +114,488 @@ impl<const C: usize> BandBuffer<'_, C> {
         paint: &Paint<'_, C>,
         op: ComposeOp,
     ) {
+        // One sweep per kind of span, chosen once per shape.
+        let bg = self.background;
+        let base = |op: ComposeOp| {
+            if matches!(op, ComposeOp::Add(_)) {
+                bg
+            } else {
+                [0; C]
+            }
+        };
+        match (op, paint) {
+            (ComposeOp::Over(a), Paint::Flat(color)) => {
+                let f = color.map(|v| i32::from(v) << COVER_BITS);
+                match rule {
+                    // The common case, with its own row loop.
+                    Coverage::Rule(FillRule::NonZero) | Coverage::Signed(1) if a.is_opaque() => {
+                        let signed = rule == Coverage::Signed(1);
+                        self.sweep_over_flat(y_lo, y_hi, &f, signed);
+                    }
+                    _ => self.sweep(y_lo, y_hi, rule, a, true, &OverFlat(f)),
+                }
+            }
+            (ComposeOp::Over(a), Paint::Plane(plane)) => {
+                self.sweep(y_lo, y_hi, rule, a, true, &OverPlane(plane));
+            }
+            (ComposeOp::Add(a) | ComposeOp::Accumulate(a), Paint::Flat(color)) => {
+                let base = base(op);
+                let diff = core::array::from_fn(|ch| i32::from(color[ch]) - i32::from(base[ch]));
+                self.sweep(y_lo, y_hi, rule, a, false, &AddFlat(diff));
+            }
+            (ComposeOp::Add(a) | ComposeOp::Accumulate(a), Paint::Plane(plane)) => {
+                let bgf = base(op).map(|b| i32::from(b) << COVER_BITS);
+                self.sweep(y_lo, y_hi, rule, a, false, &AddPlane(plane, bgf));
+            }
+            (ComposeOp::Over(a), Paint::Gradient(g)) => {
+                self.sweep(y_lo, y_hi, rule, a, true, &GradientRun { g, op, bg });
+            }
+            (ComposeOp::Add(a) | ComposeOp::Accumulate(a), Paint::Gradient(g)) => {
+                self.sweep(y_lo, y_hi, rule, a, false, &GradientRun { g, op, bg });
+            }
+            (ComposeOp::Attenuate(a), _) => {
+                self.sweep(y_lo, y_hi, rule, a, true, &Attenuate);
+            }
+        }
+    }
+
+    /// The sweep of rows `y_lo..y_hi`: per row, the running sum of the
+    /// scratch's changes (clearing them) gives each pixel its coverage,
+    /// constant between changes ([`sweep_row`]). `convex`: the share is
+    /// clamped to `0..=1` px first (over, attenuate).
+    #[inline(always)]
+    fn sweep<O: RunOp<C>>(
+        &mut self,
+        y_lo: i32,
+        y_hi: i32,
+        rule: Coverage,
+        alpha: Opacity,
+        convex: bool,
+        op: &O,
+    ) {
         let w = usize::from(self.band.width);
         let x0 = self.band.x0;
-        let bg = self.background;
+        let opaque = alpha.is_opaque();
+        let a4096 = i32::from(alpha.to_4096ths());
+        // The factor of the pixels from a change on: the share times the
+        // opacity (coverage units), WHOLE for whole pixels of an opaque
+        // shape, SKIP for a share whose composite rounds to nothing, 0 for
+        // no share.
+        let factor = |c: i32| -> i32 {
+            let s = share(c, rule);
+            if s == 0 {
+                return 0;
+            }
+            // A convex combination needs a share within the pixel.
+            let s = if convex { s.clamp(0, COVER_ONE) } else { s };
+            let k = if opaque {
+                if s == COVER_ONE {
+                    return WHOLE;
+                }
+                s
+            } else if s.unsigned_abs() < 1 << (31 - ALPHA_BITS) {
+                (s * a4096) >> ALPHA_BITS
+            } else {
+                ((i64::from(s) * i64::from(a4096)) >> ALPHA_BITS) as i32
+            };
+            if k == 0 {
+                SKIP
+            } else {
+                k
+            }
+        };
         for y in self.rows_in_band(y_lo, y_hi) {
             let r = (y - self.band.y0) as usize;
             let Some(mut row) = take_row(self.cover, r, w) else {
                 continue;
             };
             let (lo, hi) = (row.lo, row.hi);
-            let deltas = &mut *row.deltas;
-            let Some(row_acc) = self.acc.get_mut(r * w * C..(r + 1) * w * C) else {
-                deltas.iter_mut().for_each(|d| *d = 0);
+            let Some(changes) = row.deltas.get_mut(lo..=hi) else {
                 continue;
             };
-            let mut c: i32 = 0;
-            let mut x = lo;
-            let mut drawn = (usize::MAX, 0);
-            let changes = deltas.get_mut(..=hi).unwrap_or_default();
-            while x <= hi {
-                if let Some(d) = changes.get_mut(x) {
-                    c = c.wrapping_add(core::mem::take(d));
-                }
-                // The run lasts to the next change, or to the band's end if
-                // coverage remains after the last one.
-                let mut next = x + 1;
-                while let Some(&0) = changes.get(next) {
-                    next += 1;
-                }
-                let end = if next > hi && c != 0 { w } else { next };
-                let s = share(c, rule);
-                if s != 0 {
-                    if let Some(px) = row_acc.get_mut(x * C..end * C) {
-                        let fx = x0.saturating_add(x as i32);
-                        run(px, s, fx, y, paint, op, bg);
-                        drawn = (drawn.0.min(x), drawn.1.max(end));
-                    }
-                }
-                x = next;
+            let Some(px) = self.acc.get_mut((r * w + lo) * C..(r + 1) * w * C) else {
+                changes.iter_mut().for_each(|d| *d = 0);
+                continue;
+            };
+            let x = x0.saturating_add(lo as i32);
+            let (first, last) = sweep_row(op, changes, px, w - lo, (x, y), &factor);
+            if first < last {
+                row.mark(lo + first, lo + last);
             }
-            row.mark(drawn.0, drawn.1);
         }
     }
 }
 
-/// Composes one run of pixels `px` (`C` values each) of share `s`, whose
-/// first pixel is frame pixel `(x, y)`.
-#[inline]
-fn run<const C: usize>(
+impl<const C: usize> BandBuffer<'_, C> {
+    /// [`sweep`](Self::sweep) of an opaque flat colour `f` over, with the
+    /// nonzero rule (`signed`: the orientation-signed coverage of a simple
+    /// outline, clamped), row by row in [`over_flat_row`].
+    fn sweep_over_flat(&mut self, y_lo: i32, y_hi: i32, f: &[i32; C], signed: bool) {
+        let w = usize::from(self.band.width);
+        for y in self.rows_in_band(y_lo, y_hi) {
+            let r = (y - self.band.y0) as usize;
+            let Some(mut row) = take_row(self.cover, r, w) else {
+                continue;
+            };
+            let (lo, hi) = (row.lo, row.hi);
+            let Some(changes) = row.deltas.get_mut(lo..=hi) else {
+                continue;
+            };
+            let Some(px) = self.acc.get_mut((r * w + lo) * C..(r + 1) * w * C) else {
+                changes.iter_mut().for_each(|d| *d = 0);
+                continue;
+            };
+            let (first, last) = over_flat_row(f, changes, px, w - lo, signed);
+            if first < last {
+                row.mark(lo + first, lo + last);
+            }
+        }
+    }
+}
+
+/// One row of an opaque flat over (see [`sweep_row`]): the share of a
+/// pixel is its coverage clamped to `0..=1` px (`signed`) or its size
+/// clamped to 1 px (nonzero); whole pixels are stored (a tight loop to the
+/// next change), partial ones blended.
+#[inline(never)]
+fn over_flat_row<const C: usize>(
+    f: &[i32; C],
+    changes: &mut [i32],
     px: &mut [i32],
-    s: i32,
-    x: i32,
-    y: i32,
-    paint: &Paint<'_, C>,
+    tail: usize,
+    signed: bool,
+) -> (usize, usize) {
+    let f = *f;
+    let n = changes.len();
+    let mut px = px;
+    let mut c: i32 = 0;
+    // The share of the pixels from the last change on.
+    let mut s: i32 = 0;
+    let (mut first, mut last) = (usize::MAX, 0);
+    let mut i = 0;
+    while let Some(d) = changes.get_mut(i) {
+        if *d != 0 {
+            c = c.wrapping_add(core::mem::take(d));
+            if s != 0 {
+                last = i;
+            }
+            s = if signed {
+                c.clamp(0, COVER_ONE)
+            } else {
+                c.unsigned_abs().min(COVER_ONE as u32) as i32
+            };
+            if s != 0 && first == usize::MAX {
+                first = i;
+            }
+        }
+        let Some((p, rest)) = core::mem::take(&mut px).split_first_chunk_mut::<C>() else {
+            break;
+        };
+        px = rest;
+        i += 1;
+        if s == COVER_ONE {
+            *p = f;
+            // The run's other whole pixels, to the next change (counted
+            // first: a loop bounded by the pixels left would make the
+            // compiler divide their count by C).
+            let mut j = i;
+            while changes.get(j) == Some(&0) {
+                j += 1;
+            }
+            px = fill(core::mem::take(&mut px), &f, j - i);
+            i = j;
+        } else if s != 0 {
+            blend_over(p, &f, s);
+        }
+    }
+    if s != 0 {
+        last = n;
+        // Coverage left after the last change runs to the band's end.
+        while let Some((p, rest)) = core::mem::take(&mut px).split_first_chunk_mut::<C>() {
+            if s == COVER_ONE {
+                *p = f;
+            } else {
+                blend_over(p, &f, s);
+            }
+            px = rest;
+        }
+        last = last.max(tail);
+    }
+    (first, last)
+}
+
+/// The first `n` pixels of `px` set to the flat colour `f`; the rest of
+/// `px` back (out of line, like [`blend_over`]). Indexed by values, not by
+/// a loop over chunks, whose trip count the compiler would find by dividing
+/// by `C`.
+#[inline(never)]
+fn fill<'p, const C: usize>(px: &'p mut [i32], f: &[i32; C], n: usize) -> &'p mut [i32] {
+    let end = (n * C).min(px.len());
+    let (run, rest) = px.split_at_mut(end);
+    for k in 0..n {
+        if let Some(p) = run.get_mut(k * C..k * C + C) {
+            p.copy_from_slice(f);
+        }
+    }
+    rest
+}
+
+/// A partly covered pixel of an opaque flat over (out of line: the row
+/// loop keeps its registers).
+#[inline(never)]
+fn blend_over<const C: usize>(p: &mut [i32; C], f: &[i32; C], k: i32) {
+    OverFlat(*f).part(p, k, &());
+}
+
+/// Factors that mark whole pixels of an opaque shape, and a share whose
+/// composite rounds to nothing (drawn, unchanged).
+const WHOLE: i32 = i32::MAX;
+const SKIP: i32 = i32::MIN;
+
+/// One row of a sweep: `changes` (the row's from its first change on,
+/// cleared here) and its pixels `px` from there to the band's end (`tail`
+/// pixels), the first at frame pixel `(x, y)`. Each pixel's coverage is
+/// the running sum; at each change the factor is found once (`factor`:
+/// [`WHOLE`], [`SKIP`], 0 for no share, or the composite's factor), and the
+/// run of pixels up to the next change composed with it; coverage left
+/// after the last change carries on to the band's end. Returns the drawn
+/// extent: from the first pixel with a share to the end of the last run
+/// with one. Out of line, so that its loops keep their values in
+/// registers.
+#[inline(never)]
+fn sweep_row<O: RunOp<C>, F: Fn(i32) -> i32, const C: usize>(
+    op: &O,
+    changes: &mut [i32],
+    px: &mut [i32],
+    tail: usize,
+    (x, y): (i32, i32),
+    factor: &F,
+) -> (usize, usize) {
+    let n = changes.len();
+    let mut c: i32 = 0;
+    let (mut first, mut last) = (usize::MAX, 0);
+    let mut i = 0;
+    while let Some(d) = changes.get_mut(i) {
+        c = c.wrapping_add(core::mem::take(d));
+        // The run: to the next change, or to the band's end if coverage
+        // remains after the last one.
+        let mut j = i + 1;
+        while let Some(0) = changes.get(j) {
+            j += 1;
+        }
+        let end = if j >= n && c != 0 { tail } else { j };
+        let k = factor(c);
+        if k != 0 {
+            if first == usize::MAX {
+                first = i;
+            }
+            last = end;
+            if let Some(run) = px.get_mut(i * C..end * C) {
+                op.run(run, k, (x.wrapping_add(i as i32), y));
+            }
+        }
+        i = j;
+    }
+    (first, last)
+}
+
+/// A run of pixels of factor `k` (see [`sweep_row`]), the first at frame
+/// pixel `(x, y)`.
+#[inline(always)]
+fn compose_run<O: SpanOp<C>, const C: usize>(op: &O, px: &mut [i32], k: i32, (x, y): (i32, i32)) {
+    let mut cur = op.cursor(x, y);
+    let mut px = px;
+    if k == WHOLE {
+        while let Some((p, rest)) = core::mem::take(&mut px).split_first_chunk_mut::<C>() {
+            op.whole(p, &cur);
+            op.step(&mut cur);
+            px = rest;
+        }
+    } else if k != SKIP {
+        while let Some((p, rest)) = core::mem::take(&mut px).split_first_chunk_mut::<C>() {
+            op.part(p, k, &cur);
+            op.step(&mut cur);
+            px = rest;
+        }
+    }
+}
+
+/// How one kind of span composes a run of pixels of factor `k` (see
+/// [`sweep_row`]), the first at frame pixel `(x, y)`: pixel by pixel for
+/// every [`SpanOp`], by its own stepping for a gradient.
+trait RunOp<const C: usize> {
+    fn run(&self, px: &mut [i32], k: i32, at: (i32, i32));
+}
+
+impl<O: SpanOp<C>, const C: usize> RunOp<C> for O {
+    #[inline(always)]
+    fn run(&self, px: &mut [i32], k: i32, at: (i32, i32)) {
+        compose_run(self, px, k, at);
+    }
+}
+
+/// A gradient's runs, composed in `band/gradient.rs` (its ramps step
+/// per sub-run, not per pixel).
+struct GradientRun<'g, const C: usize> {
+    g: &'g crate::style::Gradient<C>,
     op: ComposeOp,
     bg: [u16; C],
-) {
-    let (alpha, s) = match op {
-        ComposeOp::Add(a) | ComposeOp::Accumulate(a) => (a, s),
-        // A convex combination needs a share within the pixel.
-        ComposeOp::Over(a) | ComposeOp::Attenuate(a) => (a, s.clamp(0, COVER_ONE)),
-    };
-    let whole = s == COVER_ONE && alpha.is_opaque();
-    // The share times the opacity, in coverage units (signed for add).
-    let k = if alpha.is_opaque() {
-        s
-    } else {
-        ((i64::from(s) * i64::from(alpha.to_4096ths())) >> ALPHA_BITS) as i32
-    };
-    if k == 0 {
-        return;
+}
+
+impl<const C: usize> RunOp<C> for GradientRun<'_, C> {
+    #[inline(always)]
+    fn run(&self, px: &mut [i32], k: i32, (x, y): (i32, i32)) {
+        if k == SKIP {
+            return;
+        }
+        let whole = k == WHOLE;
+        let k = if whole { COVER_ONE } else { k };
+        super::gradient::compose(px, k, whole, x, y, self.g, self.op, self.bg);
     }
-    match (op, paint) {
-        (ComposeOp::Over(_), Paint::Flat(color)) => {
-            let f = color.map(|v| i32::from(v) << COVER_BITS);
-            if whole {
-                for p in pixels::<C>(px) {
-                    *p = f;
-                }
-            } else {
-                for p in pixels::<C>(px) {
-                    for ch in 0..C {
-                        p[ch] += mul_share(f[ch] - p[ch], k);
-                    }
-                }
-            }
-        }
-        (ComposeOp::Over(_), Paint::Plane(plane)) => {
-            let mut v = plane_at(plane, x, y);
-            for p in pixels::<C>(px) {
-                for ch in 0..C {
-                    if whole {
-                        p[ch] = v[ch];
-                    } else {
-                        p[ch] += mul_share(v[ch] - p[ch], k);
-                    }
-                    v[ch] = v[ch].saturating_add(plane.gx[ch]);
-                }
-            }
-        }
-        (ComposeOp::Add(_) | ComposeOp::Accumulate(_), Paint::Flat(color)) => {
-            // (I - bg) k exactly: below 2^12 * 2^16, one product per run.
-            let base = if matches!(op, ComposeOp::Add(_)) {
-                bg
-            } else {
-                [0; C]
-            };
-            let mut add = [0i32; C];
+}
+
+/// How one kind of span composes a pixel (`C` values), chosen once per
+/// shape; `Cursor` is what it steps along a row (a Gouraud plane's value).
+trait SpanOp<const C: usize> {
+    type Cursor;
+    /// The cursor at frame pixel `(x, y)` (row set-up).
+    fn cursor(&self, x: i32, y: i32) -> Self::Cursor;
+    /// One pixel to the right.
+    fn step(&self, cur: &mut Self::Cursor);
+    /// A whole pixel of an opaque shape.
+    fn whole(&self, p: &mut [i32; C], cur: &Self::Cursor);
+    /// A pixel covered by the factor `k` (coverage units, signed for add).
+    fn part(&self, p: &mut [i32; C], k: i32, cur: &Self::Cursor);
+}
+
+/// `acc = acc (1 - k) + I k`, one colour (`I` in accumulator units).
+struct OverFlat<const C: usize>([i32; C]);
+
+impl<const C: usize> SpanOp<C> for OverFlat<C> {
+    type Cursor = ();
+    #[inline(always)]
+    fn cursor(&self, _: i32, _: i32) {}
+    #[inline(always)]
+    fn step(&self, _: &mut ()) {}
+    #[inline(always)]
+    fn whole(&self, p: &mut [i32; C], _: &()) {
+        *p = self.0;
+    }
+    #[inline(always)]
+    fn part(&self, p: &mut [i32; C], k: i32, _: &()) {
+        let f = &self.0;
+        // Both in 0..2^28 (every over composite of intensities is): the
+        // difference needs no limiting; else the general product.
+        if p.iter().fold(0, |m, &v| m | v) as u32 >> 28 == 0 {
             for ch in 0..C {
-                add[ch] = (i32::from(color[ch]) - i32::from(base[ch])) * k;
+                p[ch] += mul_share_unlimited(f[ch] - p[ch], k);
             }
-            for p in pixels::<C>(px) {
-                for ch in 0..C {
-                    p[ch] = p[ch].saturating_add(add[ch]);
-                }
-            }
-        }
-        (ComposeOp::Add(_) | ComposeOp::Accumulate(_), Paint::Plane(plane)) => {
-            let mut v = plane_at(plane, x, y);
-            let base = if matches!(op, ComposeOp::Add(_)) {
-                bg
-            } else {
-                [0; C]
-            };
-            let bgf = base.map(|b| i32::from(b) << COVER_BITS);
-            for p in pixels::<C>(px) {
-                for ch in 0..C {
-                    let rel = v[ch] - bgf[ch];
-                    let add = if whole { rel } else { mul_share(rel, k) };
-                    p[ch] = p[ch].saturating_add(add);
-                    v[ch] = v[ch].saturating_add(plane.gx[ch]);
-                }
+        } else {
+            for ch in 0..C {
+                p[ch] += mul_share(f[ch] - p[ch], k);
             }
         }
-        (ComposeOp::Attenuate(_), _) => {
-            for p in pixels::<C>(px) {
-                for ch in 0..C {
-                    p[ch] = if whole {
-                        0
-                    } else {
-                        p[ch] - mul_share(p[ch], k)
-                    };
-                }
-            }
-        }
-        (_, Paint::Gradient(g)) => super::gradient::compose(px, k, whole, x, y, g, op, bg),
     }
 }
 
-/// The pixels of a run, `C` values each. (`chunks_exact` would divide the
-/// run's length by `C`: a library call on the Cortex-M0.)
-#[inline]
-pub(super) fn pixels<const C: usize>(px: &mut [i32]) -> Pixels<'_, C> {
-    Pixels(px)
+/// `acc = acc (1 - k) + I k`, a Gouraud plane.
+struct OverPlane<'p, const C: usize>(&'p Plane<C>);
+
+impl<const C: usize> SpanOp<C> for OverPlane<'_, C> {
+    type Cursor = [i32; C];
+    #[inline(always)]
+    fn cursor(&self, x: i32, y: i32) -> [i32; C] {
+        plane_at(self.0, x, y)
+    }
+    #[inline(always)]
+    fn step(&self, v: &mut [i32; C]) {
+        for ch in 0..C {
+            v[ch] = v[ch].wrapping_add(self.0.gx[ch]);
+        }
+    }
+    #[inline(always)]
+    fn whole(&self, p: &mut [i32; C], v: &[i32; C]) {
+        *p = *v;
+    }
+    #[inline(always)]
+    fn part(&self, p: &mut [i32; C], k: i32, v: &[i32; C]) {
+        for ch in 0..C {
+            p[ch] += mul_share(v[ch] - p[ch], k);
+        }
+    }
 }
 
-pub(super) struct Pixels<'p, const C: usize>(&'p mut [i32]);
+/// `acc += (I - base) k`, one colour: the per-channel difference in
+/// linear 12-bit units, so `(I - base) k` is one exact product (below
+/// `2^12 * 2^16`).
+struct AddFlat<const C: usize>([i32; C]);
 
-impl<'p, const C: usize> Iterator for Pixels<'p, C> {
-    type Item = &'p mut [i32; C];
-    #[inline]
-    fn next(&mut self) -> Option<Self::Item> {
-        let (p, rest) = core::mem::take(&mut self.0).split_first_chunk_mut::<C>()?;
-        self.0 = rest;
-        Some(p)
+impl<const C: usize> SpanOp<C> for AddFlat<C> {
+    type Cursor = ();
+    #[inline(always)]
+    fn cursor(&self, _: i32, _: i32) {}
+    #[inline(always)]
+    fn step(&self, _: &mut ()) {}
+    #[inline(always)]
+    fn whole(&self, p: &mut [i32; C], _: &()) {
+        self.part(p, COVER_ONE, &());
+    }
+    #[inline(always)]
+    fn part(&self, p: &mut [i32; C], k: i32, _: &()) {
+        for ch in 0..C {
+            p[ch] = p[ch].saturating_add(self.0[ch] * k);
+        }
+    }
+}
+
+/// `acc += (I - base) k`, a Gouraud plane and the base in accumulator
+/// units.
+struct AddPlane<'p, const C: usize>(&'p Plane<C>, [i32; C]);
+
+impl<const C: usize> SpanOp<C> for AddPlane<'_, C> {
+    type Cursor = [i32; C];
+    #[inline(always)]
+    fn cursor(&self, x: i32, y: i32) -> [i32; C] {
+        plane_at(self.0, x, y)
+    }
+    #[inline(always)]
+    fn step(&self, v: &mut [i32; C]) {
+        for ch in 0..C {
+            v[ch] = v[ch].wrapping_add(self.0.gx[ch]);
+        }
+    }
+    #[inline(always)]
+    fn whole(&self, p: &mut [i32; C], v: &[i32; C]) {
+        for ch in 0..C {
+            p[ch] = p[ch].saturating_add(v[ch] - self.1[ch]);
+        }
+    }
+    #[inline(always)]
+    fn part(&self, p: &mut [i32; C], k: i32, v: &[i32; C]) {
+        for ch in 0..C {
+            p[ch] = p[ch].saturating_add(mul_share(v[ch] - self.1[ch], k));
+        }
+    }
+}
+
+/// `acc = acc (1 - k)`.
+struct Attenuate;
+
+impl<const C: usize> SpanOp<C> for Attenuate {
+    type Cursor = ();
+    #[inline(always)]
+    fn cursor(&self, _: i32, _: i32) {}
+    #[inline(always)]
+    fn step(&self, _: &mut ()) {}
+    #[inline(always)]
+    fn whole(&self, p: &mut [i32; C], _: &()) {
+        *p = [0; C];
+    }
+    #[inline(always)]
+    fn part(&self, p: &mut [i32; C], k: i32, _: &()) {
+        for v in p.iter_mut() {
+            *v -= mul_share(*v, k);
+        }
     }
 }
 
@@ -290,7 +608,18 @@ pub(super) fn mul_share(v: i32, k: i32) -> i32 {
     if k == COVER_ONE {
         return v;
     }
-    let v = v.clamp(-V_LIMIT, V_LIMIT);
+    // |v| <= V_LIMIT passes unchanged (one test); beyond, limited.
+    let v = if v.unsigned_abs() <= V_LIMIT as u32 {
+        v
+    } else {
+        v.clamp(-V_LIMIT, V_LIMIT)
+    };
+    mul_share_unlimited(v, k)
+}
+
+/// [`mul_share`] for `|v| <= 2^29 - 1`, `|k| <= 2^16`: the two products.
+#[inline]
+fn mul_share_unlimited(v: i32, k: i32) -> i32 {
     let (hi, lo) = (v >> LO_BITS, v & ((1 << LO_BITS) - 1));
     // v k / 2^16 = (hi k) / 2^2 + (lo k) / 2^16: carry hi k's low bits
     // into the second quotient so the result is the floor of the whole.
@@ -300,12 +629,21 @@ pub(super) fn mul_share(v: i32, k: i32) -> i32 {
 }
 
 /// The plane at frame pixel `(x, y)`, in accumulator units (span set-up:
-/// two multiplies per channel).
+/// two 32-bit multiplies per channel).
+///
+/// Evaluated modulo `2^32`: the plane is composed only where its shape
+/// covers part of a pixel, and there `|I| < 2 * 4096` levels, `2^29` in
+/// accumulator units ([`shade`](crate::shade)'s range), so the wrapped
+/// value is the exact one, and so is each step of `gx` to the next pixel of
+/// a run (`|gx| <= 4095 * 2^16`).
 #[inline]
 fn plane_at<const C: usize>(plane: &Plane<C>, x: i32, y: i32) -> [i32; C] {
-    plane
-        .at(x, y)
-        .map(|v| v.clamp(i64::from(i32::MIN / 2), i64::from(i32::MAX / 2)) as i32)
+    let (di, dj) = (x.wrapping_sub(plane.i0), y.wrapping_sub(plane.j0));
+    core::array::from_fn(|ch| {
+        plane.at0[ch]
+            .wrapping_add(plane.gx[ch].wrapping_mul(di))
+            .wrapping_add(plane.gy[ch].wrapping_mul(dj))
+    })
 }
 
 #[cfg(test)]
@@ -333,17 +671,20 @@ mod tests {
 
     #[test]
     fn over_at_half_coverage_is_the_linear_midpoint() {
-        let mut px = [1000 << COVER_BITS];
-        run(
-            &mut px,
-            COVER_ONE / 2,
+        let (mut acc, mut cover) = ([0i32; 4], [0i32; 12]);
+        let band = crate::band::Band::new(2, 0, 2);
+        let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
+        buf.clear([1000]);
+        buf.add_area(0, 0, COVER_ONE / 2);
+        buf.compose(
             0,
-            0,
+            1,
+            Coverage::Rule(FillRule::NonZero),
             &Paint::Flat([3000]),
             ComposeOp::Over(Opacity::OPAQUE),
-            [0],
         );
-        assert_eq!(px[0], 2000 << COVER_BITS);
+        assert_eq!(buf.lin12(0, 0), Some([2000]));
+        assert_eq!(buf.lin12(1, 0), Some([1000]));
     }
 
     #[test]

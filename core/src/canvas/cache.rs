@@ -98,12 +98,17 @@ fn key(serial: u32, item: Item) -> u64 {
 }
 
 /// The key's home slot among `len`: a 32-bit multiplicative hash of its
-/// two halves, mapped to `0..len` by a multiply and a shift (no division:
-/// a library call on the Cortex-M0).
+/// two halves, mapped to `0..len` by a multiply and a shift (no division,
+/// no 64-bit product: library calls on the Cortex-M0), from the hash's top
+/// 16 bits for up to `2^16` slots; beyond, the hash modulo `len`.
 fn home(key: u64, len: usize) -> usize {
     let h = ((key as u32) ^ ((key >> 32) as u32).rotate_left(13)).wrapping_mul(0x9e37_79b9);
     let h = h ^ (h >> 15);
-    ((u64::from(h) * (len as u64)) >> 32) as usize
+    if len <= 1 << 16 {
+        (((h >> 16) * len as u32) >> 16) as usize
+    } else {
+        h as usize % len
+    }
 }
 
 /// The slots a key may be in: its home and the next few, wrapping.

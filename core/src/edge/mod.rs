@@ -94,14 +94,82 @@ pub enum AreaMode {
     SeedFormula,
 }
 
-/// What an edge walk reports. Coordinates are frame pixels; the walker
-/// reports only rows inside the range it was given, and only the cells of
-/// columns the sink keeps (set when the edge is set up).
+/// What an edge walk reports: changes of each row's running coverage (a
+/// cell of area `S` at column `x` is `+S` at `x` and `-S` at `x + 1`).
+/// Coordinates are frame pixels; the walker reports only rows inside the
+/// range it was given. Changes left of the columns the sink keeps (set
+/// when the edge is set up) apply from its first column; changes right of
+/// them may be reported, and the sink ignores them.
 pub trait CoverSink {
-    /// Pixel `(x, y)` gets `area` (signed, coverage units).
-    fn cell(&mut self, x: i32, y: i32, area: i32);
     /// From column `x` of row `y` rightwards, the cover changes by `delta`
     /// (coverage units, signed). Columns left of the sink's first column
     /// apply from it.
     fn cover(&mut self, x: i32, y: i32, delta: i32);
+}
+
+/// Where a walk writes (crate-internal): changes of each row's running
+/// coverage, `d` from frame column `x` of row `y` on. A cell of area `S`
+/// at `x` is `+S` at `x` and `-S` at `x + 1`. Rows outside the walk's rows
+/// are dropped by the sink, columns left of its first apply from it, those
+/// right of its last are dropped.
+pub(crate) trait DeltaSink {
+    /// One change.
+    fn put(&mut self, x: i32, y: i32, d: i32);
+
+    /// Two changes in row `y`, at `x0` and `x1` (neighbours).
+    #[inline]
+    fn put2(&mut self, x0: i32, x1: i32, y: i32, d0: i32, d1: i32) {
+        self.put(x0, y, d0);
+        self.put(x1, y, d1);
+    }
+
+    /// `K` changes in row `y` at `x`, `x + step`, ... (`step` is `±1`).
+    #[inline]
+    fn put_n<const K: usize>(&mut self, x: i32, y: i32, step: i32, d: [i32; K]) {
+        let mut x = x;
+        for v in d {
+            self.put(x, y, v);
+            x += step;
+        }
+    }
+
+    /// Up to `n` changes in row `y` at `x`, `x + step`, ..., each drawn
+    /// from `f`, which may end the run early with `None`; returns how many
+    /// were drawn. `f` is called for rows outside too (it steps the walk).
+    /// The columns are within the walk's columns (`c_lo..=c_hi`).
+    #[inline]
+    fn run<F: FnMut() -> Option<i32>>(
+        &mut self,
+        x: i32,
+        y: i32,
+        step: i32,
+        n: i32,
+        mut f: F,
+    ) -> i32 {
+        let mut x = x;
+        for k in 0..n {
+            let Some(d) = f() else {
+                return k;
+            };
+            self.put(x, y, d);
+            x += step;
+        }
+        n.max(0)
+    }
+}
+
+/// Any [`CoverSink`] as a [`DeltaSink`]: every change a cover change,
+/// rows outside the walk's dropped.
+pub(crate) struct Forward<'k, K: ?Sized> {
+    pub sink: &'k mut K,
+    pub rows: core::ops::Range<i32>,
+}
+
+impl<K: CoverSink + ?Sized> DeltaSink for Forward<'_, K> {
+    #[inline]
+    fn put(&mut self, x: i32, y: i32, d: i32) {
+        if d != 0 && self.rows.contains(&y) {
+            self.sink.cover(x, y, d);
+        }
+    }
 }

@@ -61,8 +61,6 @@ struct Distribute<'a, 'b, const C: usize> {
 }
 
 impl<const C: usize> CoverSink for Distribute<'_, '_, C> {
-    fn cell(&mut self, _: i32, _: i32, _: i32) {}
-
     fn cover(&mut self, c: i32, r: i32, delta: i32) {
         let sign = delta.signum();
         let n = self.n as i64;

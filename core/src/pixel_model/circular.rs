@@ -363,8 +363,6 @@ struct Splat<'a, 'b, const C: usize> {
 }
 
 impl<const C: usize> CoverSink for Splat<'_, '_, C> {
-    fn cell(&mut self, _: i32, _: i32, _: i32) {}
-
     fn cover(&mut self, c: i32, r: i32, delta: i32) {
         let n = CIRCULAR_SAMPLES as i64;
         let span = n * self.m;

@@ -125,8 +125,6 @@ impl<const C: usize> HexRows<'_, '_, C> {
 }
 
 impl<const C: usize> CoverSink for HexRows<'_, '_, C> {
-    fn cell(&mut self, _: i32, _: i32, _: i32) {}
-
     fn cover(&mut self, c: i32, g: i32, delta: i32) {
         let is_a = g.rem_euclid(2) == 0;
         if is_a != self.row_a {
@@ -294,8 +292,6 @@ struct Hex19Rows<'a, 'b, const C: usize> {
 }
 
 impl<const C: usize> CoverSink for Hex19Rows<'_, '_, C> {
-    fn cell(&mut self, _: i32, _: i32, _: i32) {}
-
     fn cover(&mut self, c: i32, g: i32, delta: i32) {
         let is_a = g.rem_euclid(2) == 0;
         if is_a != self.row_a {

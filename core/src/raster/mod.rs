@@ -511,7 +511,7 @@ pub(crate) fn walk_outline<const C: usize>(
         } else if let Some(mut w) =
             EdgeWalk::new(FinePoint::from(p0), FinePoint::from(p1), mode, cols.clone())
         {
-            w.walk(rows.clone(), band);
+            w.walk_band(rows.clone(), band);
         }
     }
     Some(rows)

@@ -319,8 +319,8 @@ where
         rows_left: band.rows,
         // A row is to start.
         col: band.width,
-        seg_end: 0,
-        seg: Segment::Uniform,
+        left: 0,
+        seg: None,
         dirty: 0..0,
     };
     target.fill_contiguous(&area, pixels)
@@ -333,7 +333,8 @@ where
 /// right of its drawn extent, sent as the background's colour when the
 /// profile has one for every position (their accumulator already holds the
 /// background), and the drawn extent, resolved pixel by pixel. Per pixel a
-/// compare; segment changes are the slow path.
+/// count down and a test of the segment's kind; segment changes are the
+/// slow path.
 struct BandPixels<'x, P: Profile<C>, const C: usize> {
     /// The pixels not passed yet (rows are contiguous).
     acc: &'x mut [i32],
@@ -347,18 +348,15 @@ struct BandPixels<'x, P: Profile<C>, const C: usize> {
     y: i32,
     width: u16,
     rows_left: u16,
-    /// Column of the next pixel, and where its segment ends.
+    /// Column of the next segment (pixel segments: of the next pixel),
+    /// and the pixels left in the current segment.
     col: u16,
-    seg_end: u16,
-    seg: Segment,
+    left: u32,
+    /// The current segment's colour if it is one of the background, `None`
+    /// if its pixels are resolved.
+    seg: Option<P::Color>,
     /// Drawn columns of the current row.
     dirty: core::ops::Range<u16>,
-}
-
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Segment {
-    Uniform,
-    Pixels,
 }
 
 impl<P: Profile<C>, const C: usize> BandPixels<'_, P, C> {
@@ -384,41 +382,39 @@ impl<P: Profile<C>, const C: usize> BandPixels<'_, P, C> {
                     }
                 }
             }
-            let (seg, end) = if self.col < self.dirty.start {
-                (Segment::Uniform, self.dirty.start)
+            let (pixels, end) = if self.col < self.dirty.start {
+                (false, self.dirty.start)
             } else if self.col < self.dirty.end {
-                (Segment::Pixels, self.dirty.end)
+                (true, self.dirty.end)
             } else {
-                (Segment::Uniform, self.width)
+                (false, self.width)
             };
-            if seg == Segment::Uniform {
-                // Skip those pixels' accumulator: it holds the background.
-                let skip = usize::from(end - self.col) * C;
-                let acc = core::mem::take(&mut self.acc);
-                self.acc = acc.get_mut(skip..).unwrap_or_default();
+            let n = end.saturating_sub(self.col);
+            match (pixels, self.uniform) {
+                (false, Some(u)) => {
+                    // Skip those pixels' accumulator: it holds the
+                    // background.
+                    let acc = core::mem::take(&mut self.acc);
+                    self.acc = acc.get_mut(usize::from(n) * C..).unwrap_or_default();
+                    self.seg = Some(u);
+                    // A uniform segment's pixels need no column.
+                    self.col = end;
+                }
+                _ => self.seg = None,
             }
-            self.seg = seg;
-            self.seg_end = end;
-            if end > self.col {
+            self.left = u32::from(n);
+            if n > 0 {
                 return true;
             }
         }
     }
-}
 
-impl<P: Profile<C>, const C: usize> Iterator for BandPixels<'_, P, C> {
-    type Item = P::Color;
-
+    /// The next pixel of a pixel segment: its one rounding, its reset to
+    /// the background, its colour.
     #[inline]
-    fn next(&mut self) -> Option<P::Color> {
-        if self.col >= self.seg_end && !self.next_segment() {
-            return None;
-        }
+    fn pixel(&mut self) -> Option<P::Color> {
         let k = self.col;
         self.col += 1;
-        if self.seg == Segment::Uniform {
-            return self.uniform;
-        }
         let (px, rest) = core::mem::take(&mut self.acc).split_first_chunk_mut::<C>()?;
         self.acc = rest;
         let mut lin = [0u16; C];
@@ -427,5 +423,21 @@ impl<P: Profile<C>, const C: usize> Iterator for BandPixels<'_, P, C> {
             px[ch] = self.bg[ch];
         }
         Some(self.profile.color(self.x0 + i32::from(k), self.y, lin))
+    }
+}
+
+impl<P: Profile<C>, const C: usize> Iterator for BandPixels<'_, P, C> {
+    type Item = P::Color;
+
+    #[inline]
+    fn next(&mut self) -> Option<P::Color> {
+        if self.left == 0 && !self.next_segment() {
+            return None;
+        }
+        self.left -= 1;
+        match self.seg {
+            Some(u) => Some(u),
+            None => self.pixel(),
+        }
     }
 }

@@ -328,12 +328,26 @@ fn render_frame<const C: usize>(fill: bool) -> u64 {
 /// Counts the edge pixels the walker reports and the pixels the span sweep
 /// visits for the scene (what the instruction totals are divided by).
 fn counts<const C: usize>() -> (u64, u64) {
-    struct Count(u64);
+    /// An edge's cover changes, by row: a row with changes at `k`
+    /// distinct columns holds `k - 1` edge pixels (a cell of area `S` is
+    /// `+S` at its column and `-S` at the next, where the next cell's
+    /// change or the row's remaining cover lands).
+    struct Count(std::collections::BTreeSet<(i32, i32)>);
     impl CoverSink for Count {
-        fn cell(&mut self, _: i32, _: i32, _: i32) {
-            self.0 += 1;
+        fn cover(&mut self, x: i32, y: i32, d: i32) {
+            if d != 0 {
+                self.0.insert((y, x));
+            }
         }
-        fn cover(&mut self, _: i32, _: i32, _: i32) {}
+    }
+    impl Count {
+        fn pixels(&self) -> u64 {
+            let mut rows = std::collections::BTreeMap::<i32, u64>::new();
+            for &(y, _) in &self.0 {
+                *rows.entry(y).or_default() += 1;
+            }
+            rows.values().map(|k| k.saturating_sub(1)).sum()
+        }
     }
     let (tris, lines) = scene::<C>();
     let mut outlines: Vec<Vec<SubPoint>> = tris.iter().map(|t| t.vertices.to_vec()).collect();
@@ -350,14 +364,16 @@ fn counts<const C: usize>() -> (u64, u64) {
             SubPoint::new(l.from.x - nx, l.from.y - ny),
         ]);
     }
-    let (mut cells, mut swept) = (Count(0), 0u64);
+    let (mut cells, mut swept) = (0u64, 0u64);
     for v in &outlines {
         for band in Bands::new(W, H, BAND_ROWS) {
             let rows = band.y0..band.y0 + i32::from(band.rows);
             for k in 0..v.len() {
                 let (p0, p1) = (FinePoint::from(v[k]), FinePoint::from(v[(k + 1) % v.len()]));
                 if let Some(mut w) = EdgeWalk::new(p0, p1, AreaMode::Exact, 0..i32::from(W)) {
-                    w.walk(rows.clone(), &mut cells);
+                    let mut edge = Count(Default::default());
+                    w.walk(rows.clone(), &mut edge);
+                    cells += edge.pixels();
                 }
             }
         }
@@ -373,7 +389,7 @@ fn counts<const C: usize>() -> (u64, u64) {
         let rows = y1.min(i32::from(H) - 1) - y0.max(0) + 1;
         swept += (cols.max(0) * rows.max(0)) as u64;
     }
-    (cells.0, swept)
+    (cells, swept)
 }
 
 fn callgrind(channels: &str, scene: &str, toggle: Option<&str>) -> Result<u64, String> {
