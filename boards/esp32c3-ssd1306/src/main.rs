@@ -1,19 +1,18 @@
 //! softedge on an ESP32-C3 with an SSD1306 128x64 I2C OLED (1 bit per pixel).
 //!
-//! Renders an animated gray scene — a rotating fan of Gouraud triangles, a
-//! counter-rotating star of anti-aliased lines, and a linear black-to-white
-//! ramp along the bottom — band by band, 8 rows at a time: one band is one
-//! SSD1306 page, so there is no frame buffer anywhere, only the band's
-//! accumulation buffer and one 128-byte page. Each row of a band is resolved
-//! to linear 12-bit intensity and dithered to `BinaryColor` in linear light
-//! (`softedge::tone::dither`): Floyd–Steinberg, with one error row that
-//! lives across the bands of a frame, or the ordered 8x8 Bayer matrix; the
-//! two alternate every 100 frames. The page is sent with the `ssd1306`
-//! driver's `set_draw_area` + `draw`.
+//! Shows an animated panel (`ui.rs`): a dial with a moving needle, an arc
+//! gauge with its value in text, and the ditherer's name. `softedge`'s
+//! [`Renderer`] draws it in bands of 8 rows, one SSD1306 page each,
+//! dithers every band to 1 bit in linear light — Floyd–Steinberg
+//! ([`DiffusionProfile`], its error row carried from band to band) and the
+//! 8x8 Bayer matrix ([`Bayer8`]) alternate every 100 frames — and sends
+//! each band with one `fill_contiguous` to [`PageWriter`](pages::PageWriter),
+//! which packs it into the page's 128 bytes for the driver's
+//! `set_draw_area` + `draw`. No band loop here, no frame buffer anywhere.
 //!
 //! Logs one line per frame over the USB serial/JTAG port (or UART0):
-//! frame number, microseconds spent rendering and dithering, microseconds
-//! on the I2C bus, and the ditherer.
+//! frame number, microseconds for the frame (drawing, dithering and the
+//! I2C writes, which the renderer interleaves band by band), ditherer.
 //!
 //! ## Wiring
 //!
@@ -31,19 +30,24 @@
 #![no_std]
 #![no_main]
 
+mod pages;
+mod ui;
+
 use esp_backtrace as _;
 
-use embedded_graphics_core::pixelcolor::BinaryColor;
+use embedded_graphics::pixelcolor::BinaryColor;
 use esp_hal::clock::CpuClock;
 use esp_hal::i2c::master::{Config as I2cConfig, I2c};
 use esp_hal::time::{Instant, Rate};
 use esp_println::println;
 use ssd1306::prelude::*;
 use ssd1306::{I2CDisplayInterface, Ssd1306};
+use static_cell::ConstStaticCell;
 
-use softedge::scene3d::Angle;
-use softedge::tone::{Bayer8, FloydSteinberg};
-use softedge::{BandBuffer, Bands, DrawError, Line, RenderStyle, SubPoint, Triangle, SUB_ONE};
+use softedge::prelude::*;
+
+use pages::PageWriter;
+use ui::Panel;
 
 // The application descriptor Espressif's second-stage bootloader checks.
 esp_bootloader_esp_idf::esp_app_desc!();
@@ -55,95 +59,22 @@ const H: u16 = 64;
 const BAND_ROWS: u16 = 8;
 const ACC_LEN: usize = BandBuffer::<1>::acc_len(W, BAND_ROWS);
 const COVER_LEN: usize = BandBuffer::<1>::cover_len(W, BAND_ROWS);
+/// Walk-cache slots: none. This panel's edges are short (flattened
+/// curves), so few go on from one band to the next; see the RP2040
+/// firmware, where 16 slots changed a frame by under 0.2 %. Each slot is
+/// `WalkSlot::<1>::SIZE` bytes.
+const SLOTS: usize = 0;
 
-/// The band buffers (`4 * (ACC_LEN + COVER_LEN)` = 8 256 bytes of .bss).
-static mut ACC: [i32; ACC_LEN] = [0; ACC_LEN];
-static mut COVER: [i32; COVER_LEN] = [0; COVER_LEN];
-
-/// Ordered-dither thresholds, computed at compile time (flash).
-static BAYER: Bayer8 = Bayer8::new();
+/// The band buffers (`4 * (ACC_LEN + COVER_LEN)` = 8 256 bytes), and
+/// Floyd–Steinberg's rows (an `i16` error and a result per column, 384
+/// bytes): all zeros, in .bss, each handed out once.
+static ACC: ConstStaticCell<[i32; ACC_LEN]> = ConstStaticCell::new([0; ACC_LEN]);
+static COVER: ConstStaticCell<[i32; COVER_LEN]> = ConstStaticCell::new([0; COVER_LEN]);
+static ERR_ROW: ConstStaticCell<[i16; W as usize]> = ConstStaticCell::new([0; W as usize]);
+static BITS: ConstStaticCell<[bool; W as usize]> = ConstStaticCell::new([false; W as usize]);
 
 /// Frames between switches of the ditherer.
 const DITHER_PERIOD: u32 = 100;
-const FAN: usize = 8;
-const RAYS: usize = 6;
-
-#[derive(Clone, Copy, PartialEq, Eq, Debug)]
-enum Dither {
-    FloydSteinberg,
-    Bayer,
-}
-
-/// The scene of one frame, drawn into every band.
-struct Scene {
-    fan: [Triangle<1>; FAN],
-    rays: [Line<1>; RAYS],
-    ramp: [Triangle<1>; 2],
-}
-
-/// `(cx, cy) + r * (cos a, sin a)` in sub-pixel units (pixels in).
-fn polar(cx: i32, cy: i32, a: Angle, r: i32) -> SubPoint {
-    // r * 16 < 2^10 and |cos| <= 2^16: the product stays below 2^27.
-    let dx = (r * SUB_ONE * a.cos_q16()) >> 16;
-    let dy = (r * SUB_ONE * a.sin_q16()) >> 16;
-    SubPoint::new(cx * SUB_ONE + dx, cy * SUB_ONE + dy)
-}
-
-fn turn(base: Angle, k: usize, n: usize) -> Angle {
-    Angle(base.0.wrapping_add(Angle::from_turns(k as u32, n as u32).0))
-}
-
-impl Scene {
-    fn at(frame: u32) -> Self {
-        // 1/1024 of a turn per frame: slow sub-pixel motion, where
-        // anti-aliasing (and its dithering) shows best.
-        let spin = Angle((frame.wrapping_mul(64) & 0xffff) as u16);
-        let back = Angle(0u16.wrapping_sub(spin.0));
-        let (fx, fy, fr) = (34, 26, 24);
-        let fan = core::array::from_fn(|k| {
-            let rim = if k % 2 == 0 { 3200 } else { 700 };
-            Triangle::new(
-                [
-                    polar(fx, fy, spin, 0),
-                    polar(fx, fy, turn(spin, k, FAN), fr),
-                    polar(fx, fy, turn(spin, k + 1, FAN), fr),
-                ],
-                [[4095], [rim], [4095 - rim]],
-            )
-        });
-        let (sx, sy) = (96, 26);
-        let rays = core::array::from_fn(|k| {
-            Line::new(
-                polar(sx, sy, turn(back, k, RAYS), 4),
-                polar(sx, sy, turn(back, k, RAYS), 24),
-                [[4095], [1200]],
-            )
-        });
-        // A linear ramp, black at the left to white at the right, rows 54..64.
-        let (tl, tr, bl, br) = (
-            SubPoint::from_px(0, 54),
-            SubPoint::from_px(128, 54),
-            SubPoint::from_px(0, 64),
-            SubPoint::from_px(128, 64),
-        );
-        let ramp = [
-            Triangle::new([tl, tr, bl], [[0], [4095], [0]]),
-            Triangle::new([tr, br, bl], [[4095], [4095], [0]]),
-        ];
-        Scene { fan, rays, ramp }
-    }
-
-    fn draw(&self, band: &mut BandBuffer<'_, 1>) -> Result<(), DrawError> {
-        let style = RenderStyle::default();
-        for t in self.fan.iter().chain(&self.ramp) {
-            t.draw(band, &style)?;
-        }
-        for l in &self.rays {
-            l.draw(band, &style)?;
-        }
-        Ok(())
-    }
-}
 
 #[esp_hal::main]
 fn main() -> ! {
@@ -161,18 +92,23 @@ fn main() -> ! {
     if let Err(e) = display.init() {
         panic!("SSD1306 init (wiring? address?): {:?}", e);
     }
+    let mut oled = PageWriter::new(display);
 
-    // SAFETY: the only references to the two statics are taken here, once;
-    // `main` never returns, so they are unique for the program's life.
-    let (acc, cover) = unsafe {
-        (
-            &mut *core::ptr::addr_of_mut!(ACC),
-            &mut *core::ptr::addr_of_mut!(COVER),
-        )
+    let (Some(acc), Some(cover), Some(err_row), Some(bits)) = (
+        ACC.try_take(),
+        COVER.try_take(),
+        ERR_ROW.try_take(),
+        BITS.try_take(),
+    ) else {
+        panic!("buffers taken twice");
     };
-    // Floyd–Steinberg's error row: one `i16` per column, kept across the
-    // bands of a frame.
-    let mut err_row = [0i16; W as usize];
+    let mut slots = [WalkSlot::<1>::EMPTY; SLOTS];
+    let mut renderer = match Renderer::new(acc, cover, &mut slots, W, H, BAND_ROWS) {
+        Ok(r) => r,
+        Err(e) => panic!("band buffers too small: {}", e),
+    };
+    let mut diffusion = DiffusionProfile::new(err_row, bits);
+    let mut bayer = Bayer8::new();
     println!(
         "softedge esp32c3-ssd1306: {}x{}, bands of {} rows, band buffers {} bytes",
         W,
@@ -183,61 +119,24 @@ fn main() -> ! {
 
     let mut frame: u32 = 0;
     loop {
-        let dither = if (frame / DITHER_PERIOD) % 2 == 0 {
-            Dither::FloydSteinberg
+        let floyd_steinberg = (frame / DITHER_PERIOD).is_multiple_of(2);
+        let label = if floyd_steinberg { "F-S" } else { "BAYER" };
+        let panel = Panel::at(frame, label);
+        let t0 = Instant::now();
+        let result = if floyd_steinberg {
+            renderer.render(&mut oled, &mut diffusion, BinaryColor::Off, |c| {
+                panel.draw(c)
+            })
         } else {
-            Dither::Bayer
+            renderer.render(&mut oled, &mut bayer, BinaryColor::Off, |c| panel.draw(c))
         };
-        let scene = Scene::at(frame);
-        let mut fs = FloydSteinberg::new(&mut err_row);
-        let (mut render_us, mut bus_us) = (0u64, 0u64);
-        let mut failed = false;
-        for band in Bands::new(W, H, BAND_ROWS) {
-            let t0 = Instant::now();
-            let mut buf = match BandBuffer::<1>::new(acc, cover, band) {
-                Ok(buf) => buf,
-                Err(e) => panic!("band buffer: {:?}", e),
-            };
-            buf.clear([0]);
-            if let Err(e) = scene.draw(&mut buf) {
-                println!("frame {}: draw error {:?}", frame, e);
+        let us = t0.elapsed().as_micros();
+        match result {
+            Ok(report) if report.skipped.count > 0 => {
+                println!("frame {}: shapes skipped: {:?}", frame, report.skipped)
             }
-            // One page: byte x holds column x of the band's 8 rows, bit r = row r.
-            let mut page = [0u8; W as usize];
-            for r in 0..band.rows {
-                let y = band.y0 + i32::from(r);
-                let mut lin = [[0u16; 1]; W as usize];
-                buf.resolve_row(y, &mut lin);
-                let mut px = [BinaryColor::Off; W as usize];
-                match dither {
-                    Dither::FloydSteinberg => fs.row(&lin, &mut px),
-                    Dither::Bayer => BAYER.row(&lin, 0, y, &mut px),
-                };
-                for (byte, p) in page.iter_mut().zip(px) {
-                    if p.is_on() {
-                        *byte |= 1 << r;
-                    }
-                }
-            }
-            let t1 = Instant::now();
-            // Band rows fit u8: the frame is 64 rows high.
-            let (top, bottom) = (band.y0 as u8, (band.y0 + i32::from(band.rows)) as u8);
-            let sent = display
-                .set_draw_area((0, top), (W as u8, bottom))
-                .and_then(|()| display.draw(&page));
-            if sent.is_err() {
-                failed = true;
-            }
-            render_us += (t1 - t0).as_micros();
-            bus_us += t1.elapsed().as_micros();
-        }
-        if failed {
-            println!("frame {}: I2C write failed", frame);
-        } else {
-            println!(
-                "frame {} render {} us i2c {} us dither {:?}",
-                frame, render_us, bus_us, dither
-            );
+            Ok(_) => println!("frame {} in {} us, {}", frame, us, label),
+            Err(e) => println!("frame {}: {}", frame, e),
         }
         frame = frame.wrapping_add(1);
     }

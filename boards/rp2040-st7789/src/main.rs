@@ -1,17 +1,22 @@
 //! softedge on a Raspberry Pi Pico (RP2040) with an ST7789 240x240 SPI TFT.
 //!
-//! Renders an animated scene — a rotating fan of six Gouraud triangles
-//! (shared edges, so any seam would show) inside a counter-rotating ring of
-//! anti-aliased lines — band by band, 16 rows at a time, into two static band
-//! buffers, tone-maps each band through the sRGB γ tables of
-//! `softedge::tone::format::Rgb565Format`, and sends it to the panel with one
-//! `fill_contiguous` per band (`softedge::eg::Renderer` over the `mipidsi`
-//! ST7789 driver). Every 128 frames the style switches between anti-aliased
-//! and aliased, so the difference can be seen side by side in time.
+//! Shows an animated instrument panel (`ui.rs`): a dial with ticks and a
+//! moving needle, an arc gauge, a readout on a translucent panel and a
+//! rounded button, anti-aliased in painter's order. `softedge`'s
+//! [`Renderer`] draws it band by band (40 rows) into static buffers, tones
+//! each band through the sRGB tables of [`Rgb565Format`] and sends it to
+//! the `mipidsi` driver in one `fill_contiguous`: the firmware has no band
+//! loop and no frame buffer.
 //!
-//! Logs over defmt (RTT): one `info` line per frame (frame number, render
-//! time, the `RenderStyle` in use), and with `DEFMT_LOG=debug` one line per
-//! band (the `Band` and the microseconds spent accumulating it).
+//! The first frame is sent whole; after it, only the rectangles the
+//! needle, the gauge and the readout can have changed
+//! ([`Panel::dirty`](ui::Panel::dirty)), each with
+//! [`Renderer::render_window`].
+//!
+//! Logs over defmt (RTT), one `info` line per frame: the rectangles sent,
+//! their pixels, the bytes that went over SPI (pixels and each band's
+//! window set-up) against a whole frame's, and the time; `debug` adds the
+//! walk cache's hits and misses.
 //!
 //! ## Wiring (Pico pin numbers are GPIO numbers)
 //!
@@ -32,9 +37,13 @@
 #![no_std]
 #![no_main]
 
+mod ui;
+
 use defmt_rtt as _;
 use panic_probe as _;
 
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
 use embedded_hal::digital::OutputPin;
 use embedded_hal_bus::spi::ExclusiveDevice;
 use mipidsi::interface::SpiInterface;
@@ -47,11 +56,9 @@ use hal::fugit::RateExtU32;
 use hal::gpio::FunctionSpi;
 use hal::pac;
 
-use softedge::eg::Renderer;
-use softedge::scene3d::Angle;
-use softedge::tone::format::{Rgb565Format, ToneFormat};
-use softedge::tone::Curve;
-use softedge::{BandBuffer, DrawError, Line, RenderStyle, SubPoint, Triangle, SUB_ONE};
+use softedge::prelude::*;
+
+use ui::Panel;
 
 /// The second-stage bootloader for the Pico's W25Q080 flash, at the start of
 /// flash (see `memory.x`).
@@ -67,107 +74,96 @@ const SPI_HZ: u32 = 62_500_000;
 /// Panel size.
 const W: u16 = 240;
 const H: u16 = 240;
-/// Rows per band.
-const BAND_ROWS: u16 = 16;
-/// `i32`s of the accumulation buffer: 240 x 16 pixels x 3 channels.
+/// Rows per band. Per band, every shape that reaches it is set up again
+/// (its outline flattened and offset), and on the Cortex-M0 that set-up,
+/// not the pixels, is most of a frame: this panel costs 134 M
+/// instructions a frame in 16-row bands and 78 M in 40-row ones
+/// (boards/README.md). 40 rows divide the panel into 6 bands; their
+/// buffers take 153 920 bytes, 58 % of the RP2040's 264 KiB.
+const BAND_ROWS: u16 = 40;
+/// `i32`s of the accumulation buffer: 240 x 40 pixels x 3 channels.
 const ACC_LEN: usize = BandBuffer::<3>::acc_len(W, BAND_ROWS);
-/// `i32`s of the coverage scratch: (240 + 2) x 16.
+/// `i32`s of the coverage scratch: (240 + 2) x 40.
 const COVER_LEN: usize = BandBuffer::<3>::cover_len(W, BAND_ROWS);
+/// Walk-cache slots: an edge that goes on below a band can keep its walk
+/// in one, so that the next band resumes it instead of setting it up
+/// again. This panel's edges are short (flattened curves): a whole frame
+/// has 44 that cross a band boundary, and on the Cortex-M0 16 slots
+/// changed a frame by under 0.2 % (a little slower, the look-ups cost
+/// what the saved set-ups did), so it runs without; each slot is
+/// `WalkSlot::<3>::SIZE` = 456 bytes. Scenes of long edges (large
+/// triangles, Gouraud meshes, whose planes are cached too) gain more.
+const SLOTS: usize = 0;
 
-/// The band buffers (`4 * (ACC_LEN + COVER_LEN)` = 61 568 bytes of .bss).
-static mut ACC: [i32; ACC_LEN] = [0; ACC_LEN];
-static mut COVER: [i32; COVER_LEN] = [0; COVER_LEN];
+/// Bytes mipidsi sends to open each window (each band of a rectangle):
+/// CASET and RASET (a command byte and four parameter bytes each) and
+/// RAMWR (a command byte).
+const WINDOW_SETUP_BYTES: u32 = (1 + 4) + (1 + 4) + 1;
 
 /// Linear 12-bit → Rgb565 through the sRGB transfer curve; the 5- and 6-bit
 /// tables are computed at compile time and live in flash.
 static TONE: Rgb565Format = Rgb565Format::new(Curve::Srgb);
 
-/// Background, linear 12-bit RGB: a dark blue.
-const BACKGROUND: [u16; 3] = [40, 60, 260];
-/// Triangles of the fan and lines of the ring.
-const FAN: usize = 6;
-const RAYS: usize = 24;
-/// Frames between style switches.
-const STYLE_PERIOD: u32 = 128;
-
-/// The scene of one frame, computed once per frame, drawn into every band.
-struct Scene {
-    fan: [Triangle<3>; FAN],
-    rays: [Line<3>; RAYS],
-    style: RenderStyle,
+/// What went over SPI in one frame.
+#[derive(Debug, Default, Clone, Copy)]
+struct Sent {
+    rects: u32,
+    pixels: u32,
+    bytes: u32,
 }
 
-/// `centre + r * (cos a, sin a)` in sub-pixel units (`r` in pixels).
-fn polar(a: Angle, r: i32) -> SubPoint {
-    let c = i32::from(W / 2) * SUB_ONE;
-    // r * 16 <= 1920 and |cos| <= 2^16: the product stays below 2^27.
-    let dx = (r * SUB_ONE * a.cos_q16()) >> 16;
-    let dy = (r * SUB_ONE * a.sin_q16()) >> 16;
-    SubPoint::new(c + dx, c + dy)
+impl Sent {
+    /// Counts `area` (clipped to the panel, as the renderer clips it) sent
+    /// in `bands` bands.
+    fn add(&mut self, area: Rectangle, bands: u32) {
+        let frame = Rectangle::new(Point::zero(), Size::new(W.into(), H.into()));
+        let a = area.intersection(&frame).size;
+        let pixels = a.width * a.height;
+        self.rects += 1;
+        self.pixels += pixels;
+        // Rgb565: two bytes a pixel.
+        self.bytes += 2 * pixels + bands * WINDOW_SETUP_BYTES;
+    }
 }
 
-/// Saturated hues around the fan, linear 12-bit.
-const HUES: [[u16; 3]; FAN] = [
-    [4095, 0, 0],
-    [4095, 4095, 0],
-    [0, 4095, 0],
-    [0, 4095, 4095],
-    [0, 0, 4095],
-    [4095, 0, 4095],
-];
-
-impl Scene {
-    fn at(frame: u32) -> Self {
-        // 1/512 of a turn per frame for the fan, the ring the other way.
-        let spin = Angle((frame.wrapping_mul(128) & 0xffff) as u16);
-        let centre = polar(Angle(0), 0);
-        let fan = core::array::from_fn(|k| {
-            let a0 = Angle(
-                spin.0
-                    .wrapping_add(Angle::from_turns(k as u32, FAN as u32).0),
-            );
-            let a1 = Angle(
-                spin.0
-                    .wrapping_add(Angle::from_turns(k as u32 + 1, FAN as u32).0),
-            );
-            Triangle::new(
-                [centre, polar(a0, 92), polar(a1, 92)],
-                [[4095, 4095, 4095], HUES[k], HUES[(k + 1) % FAN]],
-            )
-        });
-        let rays = core::array::from_fn(|k| {
-            let a = Angle(
-                Angle::from_turns(k as u32, RAYS as u32)
-                    .0
-                    .wrapping_sub(spin.0 / 2),
-            );
-            Line::new(
-                polar(a, 100),
-                polar(a, 118),
-                [[4095, 4095, 4095], [4095, 2600, 300]],
-            )
-        });
-        let style = if (frame / STYLE_PERIOD) % 2 == 0 {
-            RenderStyle::default()
-        } else {
-            RenderStyle::ALIASED
-        };
-        Scene { fan, rays, style }
-    }
-
-    fn draw(&self, band: &mut BandBuffer<'_, 3>) -> Result<(), DrawError> {
-        for t in &self.fan {
-            t.draw(band, &self.style)?;
+/// Logs a frame's failure (the SPI error's type has no defmt formatting:
+/// only that it happened is logged). Returns the report of a frame that
+/// was drawn and sent whole.
+fn check<T>(
+    frame: u32,
+    result: Result<FrameReport, RenderError<T, DrawError>>,
+) -> Option<FrameReport> {
+    match result {
+        Ok(report) => {
+            if report.skipped.count > 0 {
+                defmt::warn!("frame {}: shapes skipped: {}", frame, report.skipped);
+            }
+            return Some(report);
         }
-        for l in &self.rays {
-            l.draw(band, &self.style)?;
+        Err(RenderError::Target(_)) => defmt::error!("frame {}: SPI write failed", frame),
+        Err(RenderError::Draw { band_y0, error }) => {
+            defmt::error!("frame {}: band at row {}: {}", frame, band_y0, error)
         }
-        Ok(())
+        Err(RenderError::Band(e)) => defmt::error!("frame {}: {}", frame, e),
+        Err(RenderError::Size {
+            frame: f,
+            display: d,
+        }) => {
+            defmt::error!("frame {}: frame {} larger than panel {}", frame, f, d)
+        }
+        Err(_) => defmt::error!("frame {}: not rendered", frame),
     }
+    None
 }
 
 #[hal::entry]
 fn main() -> ! {
+    // The band buffers, in .bss: cortex-m-rt hands each `static mut` at
+    // the top of the entry function to it as a `&'static mut`, safely
+    // (the entry function runs once).
+    static mut ACC: [i32; ACC_LEN] = [0; ACC_LEN];
+    static mut COVER: [i32; COVER_LEN] = [0; COVER_LEN];
+
     let Some(mut pac) = pac::Peripherals::take() else {
         defmt::panic!("peripherals taken twice");
     };
@@ -222,48 +218,69 @@ fn main() -> ! {
     };
     let _ = backlight.set_high();
 
-    // SAFETY: the only references to the two statics are taken here, once;
-    // `main` never returns, so they are unique for the program's life.
-    let (acc, cover) = unsafe {
-        (
-            &mut *core::ptr::addr_of_mut!(ACC),
-            &mut *core::ptr::addr_of_mut!(COVER),
-        )
-    };
+    // Walk-cache slots on the stack (`WalkSlot::EMPTY` is not all zero
+    // bits: as a static they would be copied from flash at start-up).
+    let mut slots = [WalkSlot::<3>::EMPTY; SLOTS];
     defmt::info!(
-        "softedge rp2040-st7789: {}x{}, bands of {} rows, band buffers {} bytes",
+        "softedge rp2040-st7789: {}x{}, bands of {} rows: band buffers {} bytes, walk cache {} bytes",
         W,
         H,
         BAND_ROWS,
-        4 * (ACC_LEN + COVER_LEN)
+        4 * (ACC_LEN + COVER_LEN),
+        SLOTS * WalkSlot::<3>::SIZE
     );
-    let mut renderer = Renderer::<3>::new(acc, cover, W, H, BAND_ROWS);
+    let mut renderer = match Renderer::new(ACC, COVER, &mut slots, W, H, BAND_ROWS) {
+        Ok(r) => r,
+        Err(e) => defmt::panic!("band buffers too small: {}", e),
+    };
+    let whole = Rectangle::new(Point::zero(), Size::new(W.into(), H.into()));
 
+    // What the panel shows; `None` until a frame has been sent whole (and
+    // again after any failure, so that the next frame repairs it).
+    let mut shown: Option<Panel> = None;
     let mut frame: u32 = 0;
     loop {
-        let scene = Scene::at(frame);
+        let panel = Panel::at(frame);
         let t0 = timer.get_counter();
-        let result = renderer.render(
-            &mut display,
-            BACKGROUND,
-            |band| {
-                let b0 = timer.get_counter();
-                let r = scene.draw(band);
-                let us = (timer.get_counter() - b0).to_micros();
-                defmt::debug!("band {} accumulated in {} us", band.band(), us);
-                r
-            },
-            |px| TONE.color(px),
-        );
-        let us = (timer.get_counter() - t0).to_micros();
-        match result {
-            Ok(()) => defmt::info!("frame {} in {} us, style {}", frame, us, scene.style),
-            Err(softedge::eg::RenderError::Draw(e)) => defmt::error!("frame {}: {}", frame, e),
-            Err(softedge::eg::RenderError::Band(e)) => defmt::error!("frame {}: {}", frame, e),
-            Err(softedge::eg::RenderError::Target(_)) => {
-                defmt::error!("frame {}: SPI write failed", frame)
+        let mut sent = Sent::default();
+        let mut ok = true;
+        match shown {
+            None => {
+                let r = renderer.render(&mut display, &TONE, ui::BACKGROUND, |c| panel.draw(c));
+                match check(frame, r) {
+                    Some(report) => sent.add(whole, report.bands),
+                    None => ok = false,
+                }
+            }
+            Some(before) => {
+                for area in before.dirty(&panel).rects() {
+                    let r =
+                        renderer.render_window(&mut display, &TONE, ui::BACKGROUND, area, |c| {
+                            panel.draw(c)
+                        });
+                    match check(frame, r) {
+                        Some(report) => sent.add(area, report.bands),
+                        None => ok = false,
+                    }
+                }
             }
         }
+        let us = (timer.get_counter() - t0).to_micros();
+        shown = ok.then_some(panel);
+        // A whole frame: every pixel, and one window per band.
+        let whole_bytes =
+            2 * u32::from(W) * u32::from(H) + u32::from(H.div_ceil(BAND_ROWS)) * WINDOW_SETUP_BYTES;
+        defmt::info!(
+            "frame {}: {} rects, {} px, {} of {} bytes over SPI, {} us",
+            frame,
+            sent.rects,
+            sent.pixels,
+            sent.bytes,
+            whole_bytes,
+            us
+        );
+        let (hits, misses) = renderer.cache_stats();
+        defmt::debug!("walk cache: {} hits, {} without a slot", hits, misses);
         frame = frame.wrapping_add(1);
     }
 }
