@@ -14,29 +14,6 @@
 //! use softedge::prelude::*;
 //!
 //! let mut display = MockDisplay::<Rgb565>::new(); // any DrawTarget: mipidsi, ssd1306, ...
-//! let (mut acc, mut cover) = ([0; BandBuffer::<3>::acc_len(64, 8)], [0; BandBuffer::<3>::cover_len(64, 8)]);
-//! let mut slots = [WalkSlot::EMPTY; 8];
-//! let mut renderer = Renderer::new(&mut acc, &mut cover, &mut slots, 64, 64, 8)?;
-//! let button = RoundedRectangle::with_equal_corners(Rectangle::new(Point::new(8, 36), Size::new(48, 20)), Size::new(6, 6));
-//! renderer.render(&mut display, &Rgb565Format::new(Curve::Srgb), Rgb565::BLACK, |canvas| {
-//!     Circle::new(Point::new(4, 4), 40).into_styled(AaStyle::with_fill(Rgb565::BLUE)).draw(canvas)?;
-//!     button.into_styled(AaStyle::with_fill(Rgb565::RED).opacity(Opacity::from_ratio(1, 2))).draw(canvas)?;
-//!     Line::new(Point::new(2, 61), Point::new(61, 2))
-//!         .into_styled(AaStyle::with_stroke(Rgb565::WHITE, 3).cap(LineCap::Round))
-//!         .draw(canvas)
-//! })?;
-//! # assert_eq!(display.get_pixel(Point::new(24, 24)), Some(Rgb565::BLUE));
-//! # Ok::<(), Box<dyn std::error::Error>>(())
-//! ```
-//!
-//! ```
-//! use embedded_graphics::mock_display::MockDisplay;
-//! use embedded_graphics::pixelcolor::Rgb565;
-//! use embedded_graphics::prelude::*;
-//! use embedded_graphics::primitives::{Circle, Line, Rectangle, RoundedRectangle};
-//! use softedge::prelude::*;
-//!
-//! let mut display = MockDisplay::<Rgb565>::new(); // any DrawTarget: mipidsi, ssd1306, ...
 //! let mut acc = [0; BandBuffer::<3>::acc_len(64, 8)];
 //! let mut cover = [0; BandBuffer::<3>::cover_len(64, 8)];
 //! let mut slots = [WalkSlot::EMPTY; 8];
