@@ -323,38 +323,12 @@ struct Tracker<const C: usize> {
     jm: [i32; C],
 }
 
-/// `floor(sqrt(n))`, digit by digit (32-bit when `n` fits).
+/// `floor(sqrt(n))` (in 32 bits when `n` fits).
 fn isqrt(n: u64) -> u32 {
-    if let Ok(n) = u32::try_from(n) {
-        let (mut rem, mut root, mut bit) = (n, 0u32, 1u32 << 30);
-        while bit > rem {
-            bit >>= 2;
-        }
-        while bit != 0 {
-            if rem >= root + bit {
-                rem -= root + bit;
-                root = (root >> 1) + bit;
-            } else {
-                root >>= 1;
-            }
-            bit >>= 2;
-        }
-        return root;
+    match u32::try_from(n) {
+        Ok(n) => n.isqrt(),
+        Err(_) => n.isqrt() as u32,
     }
-    let (mut rem, mut root, mut bit) = (n, 0u64, 1u64 << 62);
-    while bit > rem {
-        bit >>= 2;
-    }
-    while bit != 0 {
-        if rem >= root + bit {
-            rem -= root + bit;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
-    root as u32
 }
 
 impl<const C: usize> Tracker<C> {

@@ -67,7 +67,7 @@
 
 use crate::geom::PathSink;
 
-use super::trig::{cos_sin, isqrt_u128, round_shift, sinc_q31, Q30, TURN};
+use super::trig::{cos_sin, round_shift, sinc_q31, Q30, TURN};
 use super::vector::{div_round_i64, Pt, Unit, UNIT_X};
 use super::Tolerance;
 
@@ -165,7 +165,7 @@ pub(crate) fn full_scale(n: u32) -> i64 {
     let step = TURN / i64::from(n.max(8));
     let s = sinc_q31(step).max(1) as u128;
     // f^2 = 1/sinc: f in Q30 = sqrt(2^60 * 2^31 / sinc_q31).
-    isqrt_u128((1u128 << 91) / s) as i64
+    ((1u128 << 91) / s).isqrt() as i64
 }
 
 /// Segments of an arc of sweep `|s|` (binary units) within `tol`:
@@ -193,7 +193,7 @@ pub(crate) fn arc_scale(m: u32, step: i64) -> i64 {
     // q = m / sinc in Q30; m <= 2048 so q < 2^42.
     let q = (m << 61) / s;
     let d = (1u128 << 60) + (m - 2) * q * (1 << 30); // < 2^84
-    let root = isqrt_u128(d); // Q30
+    let root = d.isqrt(); // Q30
     ((q << 30) / ((1 << 30) + root)) as i64
 }
 

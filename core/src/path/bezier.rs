@@ -46,7 +46,7 @@
 //! Bernstein numerators `c_i <= n^3 <= 2^30` summing to at most `n^3`: the
 //! sum stays below `2^62` in `i64`. `M^2 < 2^68` is formed in `i128`.
 
-use super::trig::{ceil_sqrt_u64, isqrt_u128, radians_q31};
+use super::trig::{ceil_sqrt_u64, radians_q31};
 use super::vector::{div_round_i64, Pt};
 
 /// The most segments one curve is cut into.
@@ -54,7 +54,7 @@ pub const MAX_CURVE_SEGMENTS: u32 = 1024;
 
 /// `ceil(sqrt(v))` for a `u128` square of a length.
 fn ceil_len(v: u128) -> u64 {
-    let r = isqrt_u128(v);
+    let r = v.isqrt();
     let r = if r * r < v { r + 1 } else { r };
     r.min(u128::from(u64::MAX)) as u64
 }

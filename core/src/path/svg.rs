@@ -33,7 +33,7 @@
 use crate::geom::{FinePoint, PathSink, FINE_LIMIT};
 
 use super::arc::{arc_cubics, EllipseFrame};
-use super::trig::{atan2, cos_sin, isqrt_u128, round_shift, TURN};
+use super::trig::{atan2, cos_sin, round_shift, TURN};
 use super::vector::{Pt, Unit};
 use super::Degrees;
 
@@ -602,14 +602,14 @@ fn arc_to<P: PathSink + ?Sized>(
     let d = a2 * b2;
     let centre_offset = if n >= d {
         // a' = sqrt(x1^2 + y1^2 a^2 / b^2), b' = a' b / a.
-        let na = isqrt_u128((x1s + y1s * a2 / b2.max(1)).unsigned_abs()) as i64;
+        let na = ((x1s + y1s * a2 / b2.max(1)).unsigned_abs()).isqrt() as i64;
         b = (i128::from(na) * i128::from(b) / i128::from(a.max(1))) as i64;
         a = na.max(1);
         (0i64, 0i64)
     } else {
         // Step 3: sq = sqrt((d - n) / n), Q30; its sign by the flags.
         let ratio = div_shift((d - n).unsigned_abs(), n.unsigned_abs().max(1), 60);
-        let sq = isqrt_u128(ratio) as i128; // Q30
+        let sq = ratio.isqrt() as i128; // Q30
         let sq = if large == sweep { -sq } else { sq };
         let cx = super::trig::div_round(sq * i128::from(a) * i128::from(y1), i128::from(b) << 30);
         let cy = super::trig::div_round(-sq * i128::from(b) * i128::from(x1), i128::from(a) << 30);

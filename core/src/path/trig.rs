@@ -168,7 +168,7 @@ pub(crate) fn radians_q31(a: i64) -> i64 {
 
 /// `tan(pi/8) = sqrt(2) - 1` in Q31, from `isqrt(2 * 2^62)`.
 fn tan_pi_8_q31() -> i64 {
-    isqrt_u64(2u64 << 62) as i64 - Q31
+    (2u64 << 62).isqrt() as i64 - Q31
 }
 
 /// `atan(w)` in Q31 for `|w| <= tan(pi/8)` in Q31, series to `w^23`.
@@ -231,49 +231,9 @@ pub(crate) fn atan2(y: i64, x: i64) -> u32 {
     t.rem_euclid(TURN) as u32
 }
 
-/// `floor(sqrt(v))`, digit by digit (32 steps).
-pub(crate) fn isqrt_u64(v: u64) -> u64 {
-    let mut rem = v;
-    let mut root = 0u64;
-    let mut bit = 1u64 << 62;
-    while bit > rem {
-        bit >>= 2;
-    }
-    while bit != 0 {
-        if rem >= root + bit {
-            rem -= root + bit;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
-    root
-}
-
-/// `floor(sqrt(v))`, digit by digit (64 steps).
-pub(crate) fn isqrt_u128(v: u128) -> u128 {
-    let mut rem = v;
-    let mut root = 0u128;
-    let mut bit = 1u128 << 126;
-    while bit > rem {
-        bit >>= 2;
-    }
-    while bit != 0 {
-        if rem >= root + bit {
-            rem -= root + bit;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
-    root
-}
-
 /// `ceil(sqrt(v))`.
 pub(crate) fn ceil_sqrt_u64(v: u64) -> u64 {
-    let r = isqrt_u64(v);
+    let r = v.isqrt();
     if r * r < v {
         r + 1
     } else {
@@ -347,11 +307,11 @@ mod tests {
             1 << 62,
             (1 << 62) - 1,
         ] {
-            let r = isqrt_u64(v);
+            let r = v.isqrt();
             assert!(u128::from(r) * u128::from(r) <= u128::from(v));
             assert!(u128::from(r + 1) * u128::from(r + 1) > u128::from(v));
         }
-        assert_eq!(isqrt_u128(u128::MAX), u128::from(u64::MAX));
+        assert_eq!(u128::MAX.isqrt(), u128::from(u64::MAX));
         assert_eq!(ceil_sqrt_u64(17), 5);
         assert_eq!(ceil_sqrt_u64(16), 4);
     }

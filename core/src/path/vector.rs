@@ -16,7 +16,7 @@
 
 use crate::geom::FinePoint;
 
-use super::trig::{isqrt_u64, round_shift, Q30};
+use super::trig::{round_shift, Q30};
 
 /// A point or vector in fine units (1/1024 px), in `i64`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -57,7 +57,7 @@ impl Pt {
     pub fn len(self) -> i64 {
         let (x, y) = (self.x.unsigned_abs(), self.y.unsigned_abs());
         if x < 1 << 31 && y < 1 << 31 {
-            isqrt_u64(x * x + y * y) as i64
+            (x * x + y * y).isqrt() as i64
         } else {
             // Scale down by 2^k, root, scale back: off by at most 2^k.
             let mut k = 0;
@@ -67,7 +67,7 @@ impl Pt {
                 sy >>= 1;
                 k += 1;
             }
-            (isqrt_u64(sx * sx + sy * sy) << k) as i64
+            ((sx * sx + sy * sy).isqrt() << k) as i64
         }
     }
 
@@ -87,7 +87,7 @@ impl Pt {
             x <<= 1;
             y <<= 1;
         }
-        let len = isqrt_u64((x * x + y * y) as u64) as i64;
+        let len = ((x * x + y * y) as u64).isqrt() as i64;
         if len == 0 {
             return None;
         }

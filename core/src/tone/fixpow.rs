@@ -31,26 +31,6 @@ pub(crate) const ONE: u128 = 1 << VALUE_FRAC;
 /// Fraction bits of a logarithm.
 pub(crate) const LOG_FRAC: u32 = 32;
 
-/// `floor(sqrt(n))`, bit by bit.
-const fn isqrt(n: u128) -> u128 {
-    let mut rem = n;
-    let mut root: u128 = 0;
-    let mut bit: u128 = 1 << 126;
-    while bit > rem {
-        bit >>= 2;
-    }
-    while bit != 0 {
-        if rem >= root + bit {
-            rem -= root + bit;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
-    root
-}
-
 /// `ROOTS[k] = 2^(2^-(k+1))` in Q62: `sqrt(2)`, `sqrt(sqrt(2))`, ...
 const ROOTS: [u128; LOG_FRAC as usize] = {
     let mut roots = [0u128; LOG_FRAC as usize];
@@ -58,7 +38,7 @@ const ROOTS: [u128; LOG_FRAC as usize] = {
     let mut k = 0;
     while k < roots.len() {
         // sqrt(r / 2^62) * 2^62 = sqrt(r * 2^62); r < 2^64, so r << 62 < 2^126.
-        r = isqrt(r << VALUE_FRAC);
+        r = (r << VALUE_FRAC).isqrt();
         roots[k] = r;
         k += 1;
     }

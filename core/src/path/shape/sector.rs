@@ -4,7 +4,7 @@ use crate::geom::{FinePoint, PathSink};
 use crate::path::arc::{arc_cubics, arc_points, EllipseFrame};
 use crate::path::segment::SegmentSink;
 use crate::path::stroke::LineCap;
-use crate::path::trig::{atan2, isqrt_u128, round_shift, HALF_TURN, Q30, QUARTER_TURN, TURN};
+use crate::path::trig::{atan2, round_shift, HALF_TURN, Q30, QUARTER_TURN, TURN};
 use crate::path::vector::{Pt, Unit, UNIT_X};
 use crate::path::{Degrees, StrokeError, StrokeStyle, Tolerance};
 
@@ -405,9 +405,8 @@ impl SectorRing {
         }
         // Where the offset edges meet the circle of radius rho: an angle
         // asin(i / rho) in from either end.
-        let foot =
-            isqrt_u128((i128::from(rho) * i128::from(rho) - i128::from(i) * i128::from(i)) as u128)
-                as i64;
+        let foot = ((i128::from(rho) * i128::from(rho) - i128::from(i) * i128::from(i)) as u128)
+            .isqrt() as i64;
         let alpha = i64::from(atan2(i, foot));
         let sweep = self.s - 2 * alpha;
         if sweep <= 0 {
