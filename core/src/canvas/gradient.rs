@@ -6,9 +6,8 @@
 //! per band. A gradient of one colour (degenerate geometry, one stop) is
 //! drawn as that flat colour.
 
-use super::{paths, Canvas, Outline};
-use crate::band::{ComposeOp, Coverage, Paint};
-use crate::path::{Shape, StrokeStyle, Tolerance};
+use super::{Canvas, Fill, Outline};
+use crate::path::{Shape, StrokeStyle};
 use crate::raster::DrawError;
 use crate::style::{Blend, FillRule, Gradient, Opacity};
 
@@ -46,16 +45,7 @@ impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
-        let serial = self.next_serial();
-        let r = self.gradient_outline(
-            serial,
-            outline,
-            Coverage::Rule(rule),
-            gradient,
-            blend,
-            opacity,
-        );
-        r.inspect_err(|&e| self.skip(serial, e))
+        self.fill_with(outline, Fill::Gradient(gradient), rule, blend, opacity)
     }
 
     /// Fills a shape or path ([`Shape`]) by `rule` with a gradient in
@@ -99,21 +89,7 @@ impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
-        let serial = self.next_serial();
-        let outline = paths::Filled {
-            shape,
-            tol: Tolerance::DEFAULT,
-            bounds: paths::shape_bounds(shape),
-        };
-        let r = self.gradient_outline(
-            serial,
-            &outline,
-            Coverage::Rule(rule),
-            gradient,
-            blend,
-            opacity,
-        );
-        r.inspect_err(|&e| self.skip(serial, e))
+        self.fill_shape_with(shape, Fill::Gradient(gradient), rule, blend, opacity)
     }
 
     /// Strokes a shape's or path's outline with `style` and a gradient
@@ -154,44 +130,6 @@ impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
-        let serial = self.next_serial();
-        let outline = paths::Stroked {
-            shape,
-            style,
-            tol: Tolerance::DEFAULT,
-            bounds: paths::Stroked::<S>::widen(paths::shape_bounds(shape), style),
-            error: core::cell::Cell::new(None),
-        };
-        let nz = Coverage::Rule(FillRule::NonZero);
-        let r = self
-            .gradient_outline(serial, &outline, nz, gradient, blend, opacity)
-            .and_then(|()| {
-                outline
-                    .error
-                    .get()
-                    .map_or(Ok(()), |e| Err(DrawError::Stroke(e)))
-            });
-        r.inspect_err(|&e| self.skip(serial, e))
-    }
-
-    /// An outline painted with a gradient.
-    fn gradient_outline<O: Outline + ?Sized>(
-        &mut self,
-        serial: u32,
-        outline: &O,
-        coverage: Coverage,
-        gradient: &Gradient<C>,
-        blend: Blend,
-        opacity: Opacity,
-    ) -> Result<(), DrawError> {
-        let op = match blend {
-            Blend::Over => ComposeOp::Over(opacity),
-            Blend::Add => ComposeOp::Add(opacity),
-        };
-        let paint = match gradient.flat() {
-            Some(c) => Paint::Flat(c),
-            None => Paint::Gradient(gradient),
-        };
-        self.fill_outline(serial, 0, outline, coverage, &paint, op)
+        self.stroke_shape_with(shape, style, Fill::Gradient(gradient), blend, opacity)
     }
 }

@@ -125,6 +125,16 @@ pub struct Skipped {
     pub first: Option<(u32, DrawError)>,
 }
 
+/// What a shape is painted with (crate-internal: the public methods take
+/// a colour or a gradient).
+#[derive(Clone, Copy)]
+pub(super) enum Fill<'g, const C: usize> {
+    /// One linear colour.
+    Flat([u16; C]),
+    /// A gradient.
+    Gradient(&'g crate::style::Gradient<C>),
+}
+
 /// The canvas of one band: a [`BandBuffer`] with the frame's
 /// [`WalkCache`] and the count of shapes drawn.
 ///
@@ -262,8 +272,20 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
+        self.fill_with(outline, Fill::Flat(color), rule, blend, opacity)
+    }
+
+    /// [`fill`](Self::fill) with any paint.
+    pub(super) fn fill_with<O: Outline + ?Sized>(
+        &mut self,
+        outline: &O,
+        fill: Fill<'_, C>,
+        rule: FillRule,
+        blend: Blend,
+        opacity: Opacity,
+    ) -> Result<(), DrawError> {
         let serial = self.next_serial();
-        self.paint_outline(serial, outline, rule, color, blend, opacity)
+        self.paint_outline(serial, outline, rule, fill, blend, opacity)
             .inspect_err(|&e| self.skip(serial, e))
     }
 
@@ -294,14 +316,24 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
-        let serial = self.next_serial();
+        self.fill_shape_with(shape, Fill::Flat(color), rule, blend, opacity)
+    }
+
+    /// [`fill_shape`](Self::fill_shape) with any paint.
+    pub(super) fn fill_shape_with<S: crate::path::Shape + ?Sized>(
+        &mut self,
+        shape: &S,
+        fill: Fill<'_, C>,
+        rule: FillRule,
+        blend: Blend,
+        opacity: Opacity,
+    ) -> Result<(), DrawError> {
         let outline = paths::Filled {
             shape,
             tol: crate::path::Tolerance::DEFAULT,
             bounds: paths::shape_bounds(shape),
         };
-        let r = self.paint_outline(serial, &outline, rule, color, blend, opacity);
-        r.inspect_err(|&e| self.skip(serial, e))
+        self.fill_with(&outline, fill, rule, blend, opacity)
     }
 
     /// Strokes a shape's or path's outline with `style` (width, joins,
@@ -315,6 +347,18 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
+        self.stroke_shape_with(shape, style, Fill::Flat(color), blend, opacity)
+    }
+
+    /// [`stroke_shape`](Self::stroke_shape) with any paint.
+    pub(super) fn stroke_shape_with<S: crate::path::Shape + ?Sized>(
+        &mut self,
+        shape: &S,
+        style: &crate::path::StrokeStyle<'_>,
+        fill: Fill<'_, C>,
+        blend: Blend,
+        opacity: Opacity,
+    ) -> Result<(), DrawError> {
         let serial = self.next_serial();
         let outline = paths::Stroked {
             shape,
@@ -324,7 +368,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             error: core::cell::Cell::new(None),
         };
         let r = self
-            .paint_outline(serial, &outline, FillRule::NonZero, color, blend, opacity)
+            .paint_outline(serial, &outline, FillRule::NonZero, fill, blend, opacity)
             .and_then(|()| {
                 outline
                     .error
@@ -334,17 +378,21 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         r.inspect_err(|&e| self.skip(serial, e))
     }
 
-    /// An outline in one flat colour.
+    /// An outline in one paint.
     fn paint_outline<O: Outline + ?Sized>(
         &mut self,
         serial: u32,
         outline: &O,
         rule: FillRule,
-        color: [u16; C],
+        fill: Fill<'_, C>,
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
-        let color = color.map(|v| v.min(crate::LIN_MAX));
+        let paint = match fill {
+            Fill::Flat(color) => Paint::Flat(color.map(|v| v.min(crate::LIN_MAX))),
+            // A gradient of one colour is that flat colour.
+            Fill::Gradient(g) => g.flat().map_or(Paint::Gradient(g), Paint::Flat),
+        };
         let Some(coverage) = self.coverage_of(outline, rule, blend) else {
             return Ok(());
         };
@@ -352,7 +400,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             Blend::Over => ComposeOp::Over(opacity),
             Blend::Add => ComposeOp::Add(opacity),
         };
-        self.fill_outline(serial, 0, outline, coverage, &Paint::Flat(color), op)
+        self.fill_outline(serial, 0, outline, coverage, &paint, op)
     }
 
     /// How an outline's winding integral becomes coverage: by the fill
