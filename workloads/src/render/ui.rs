@@ -8,8 +8,8 @@
 //!   of radius 90 on the same centre, stroke 12 px, from 135° sweeping
 //!   270° clockwise, butt caps), or nothing (the fixed cost the marginal
 //!   costs are taken against).
-//! - [`softedge_scene`] / [`eg_scene`]: a small dial screen (a panel, the gauge's track and
-//!   value, the disc, a read-out in its centre, a header and two buttons)
+//! - [`softedge_scene`] / [`eg_scene`]: a small dial screen (a panel,
+//!   the gauge's track and value, the disc, a read-out in its centre, a header and two buttons)
 //!   rendered whole or only inside a dirty rectangle ([`DIRTY`]: the
 //!   read-out's 20x20 pixels): softedge with `Renderer::render_window`,
 //!   embedded-graphics by clearing the rectangle in its framebuffer and
