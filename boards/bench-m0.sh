@@ -6,6 +6,14 @@
 # marginal instructions per pixel of triangle area for each size class,
 #     (insns(N = 2000) - insns(N = 1)) / (summed area of triangles 2..2000),
 # and the 132-triangle screen; then the screen at band heights 16..1.
+# Then (issue 16) a filled circle and a stroked arc gauge alone on the
+# frame, softedge (AaStyle) against embedded-graphics (PrimitiveStyle):
+# the frame's instructions and the shape's marginal cost (frame with the
+# shape - the same renderer's frame without it); and (issue 15) a dial
+# scene rendered whole and in a 20x20 dirty rectangle, with the bytes an
+# ST7789 would be sent over SPI:
+#     pixels * 2 + windows * (3 command + 8 parameter bytes)
+# (CASET, RASET, RAMWR per window; softedge sends a window per band).
 #
 # Installs nothing. Needs (once per machine):
 #   rustup target add thumbv6m-none-eabi
@@ -54,6 +62,14 @@ function group(n,    s, r) {
 function mega(n) { return sprintf("%.2f M", n / 1e6) }
 function perpx(v) { return v >= 100 ? sprintf("%.0f", v) : sprintf("%.1f", v) }
 $1 == "insns_per_tick" { tick = $2 }
+$1 == "shape" {
+    if (!($2 in sseen)) { sseen[$2] = 1; sorder[++ns] = $2 }
+    shape[$2, $3] = $4
+}
+$1 == "redraw" {
+    if (!($2 in rseen)) { rseen[$2] = 1; rorder[++nd] = $2 }
+    redraw[$2, $3] = $4; windows[$2, $3] = $5; pixels[$2, $3] = $6; bytes[$2, $3] = $7
+}
 $1 == "workload" { tris[$2] = $3; area2[$2] = $4; marginal2[$2] = $5 }
 $1 == "insns" {
     r = $2; w = $3; n = $4; rows = $5
@@ -110,6 +126,46 @@ END {
         printf "\n"
     }
     printf "```\n"
+    slabel["aa_rgb"] = "softedge AA (`AaStyle`), 16-row bands"
+    slabel["eg_fill"] = "e-g aliased (`PrimitiveStyle`), framebuffer with slice `fill_solid`"
+    slabel["eg_stock_fb"] = "e-g aliased (`PrimitiveStyle`), e-g `Framebuffer` (`draw_iter`)"
+    # The shapes of workloads/src/render/ui.rs: a disc of radius 50; an
+    # arc stroke of radius 90, width 12, sweep 270 degrees (butt caps).
+    pi = atan2(0, -1)
+    area["circle"] = pi * 50 * 50
+    area["gauge"] = 270 / 360 * pi * (96 * 96 - 84 * 84)
+    printf "\nShapes alone on a 240x240 Rgb565 frame (issue 16), instructions; marginal = frame with the shape - frame without it (N = 0):\n\n"
+    printf "| renderer | frame, no shape (N = 0) "
+    printf "| circle r 50, marginal | per px (%.0f px) | circle, frame ", area["circle"]
+    printf "| gauge arc r 90 w 12 270°, marginal | per px (%.0f px) | gauge, frame |\n", area["gauge"]
+    printf "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n"
+    for (i = 1; i <= ns; i++) {
+        r = sorder[i]
+        printf "| %s | %s ", (r in slabel ? slabel[r] : r), group(shape[r, "none"])
+        split("circle gauge", sh, " ")
+        for (k = 1; k <= 2; k++) {
+            m = shape[r, sh[k]] - shape[r, "none"]
+            printf "| %s | %s | %s ", group(m), perpx(m / area[sh[k]]), group(shape[r, sh[k]])
+        }
+        printf "|\n"
+    }
+    rlabel["aa_rgb"] = "softedge AA, `render` / `render_window`, 16-row bands"
+    rlabel["eg_fill"] = "e-g aliased, framebuffer; window: the shapes meeting it, `clipped`"
+    printf "\nPartial redraw (issue 15): the dial scene (9 shapes) whole, and only its 20x20 dirty rectangle at (110, 110); "
+    printf "SPI bytes = pixels x 2 + windows x 11 (CASET + RASET + RAMWR, 3 command + 8 parameter bytes):\n\n"
+    printf "| renderer | redrawn | instructions | windows | pixels sent | SPI bytes |\n"
+    printf "| --- | --- | ---: | ---: | ---: | ---: |\n"
+    split("full window", wh, " ")
+    wlabel["full"] = "full frame 240x240"
+    wlabel["window"] = "dirty 20x20"
+    for (i = 1; i <= nd; i++) {
+        r = rorder[i]
+        for (k = 1; k <= 2; k++) {
+            w = wh[k]
+            printf "| %s | %s | %s | %s | %s | %s |\n", (r in rlabel ? rlabel[r] : r), wlabel[w], \
+                group(redraw[r, w]), group(windows[r, w]), group(pixels[r, w]), group(bytes[r, w])
+        }
+    }
 }' "$out"
 ms=$(( (end - start) / 1000000 ))
 printf '\nqemu_seconds %d.%03d\n' $((ms / 1000)) $((ms % 1000))

@@ -13,9 +13,17 @@
 //! insns_per_tick <num>/<den>
 //! workload <name> <triangles> <twice the area of all> <twice the area of triangles 2..N>
 //! insns <renderer> <workload> <triangles drawn> <band rows> <instructions>
+//! shape <renderer> <none|circle|gauge> <instructions>
+//! redraw <renderer> <full|window> <instructions> <windows> <pixels> <SPI bytes>
 //! stack_bytes <n>
 //! done
 //! ```
+//!
+//! `shape` and `redraw` lines are the frames of
+//! `softedge_workloads::render::ui` (a circle, an arc gauge, a dial scene
+//! whole or in a dirty rectangle; `aa_rgb` is softedge, `eg_fill` and
+//! `eg_stock_fb` embedded-graphics); a `redraw` line's windows, pixels and
+//! bytes are what an SPI display is sent (`targets::SpiCounter`).
 //!
 //! `<workload>` is `empty` for the frame without triangles; a frame of
 //! embedded-graphics is one 240-row "band" (its framebuffer). A frame that
@@ -31,14 +39,19 @@
 
 mod cmdline;
 
+use core::hint::black_box;
+
 use cortex_m_rt::{entry, exception};
+use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+use embedded_graphics::prelude::*;
+use softedge::canvas::WalkSlot;
 use softedge_board_common::{self as fw, insns::Counter, Line};
 use softedge_workloads::render::eg_side;
 use softedge_workloads::render::softedge_side::{
     self, Buffers, ACC_LEN, COVER_LEN, OUT_LEN, SLOTS,
 };
-use softedge_workloads::render::targets::{Framebuffer, FB_LEN};
-use softedge::canvas::WalkSlot;
+use softedge_workloads::render::targets::{Framebuffer, SpiCounter, FB_LEN};
+use softedge_workloads::render::ui;
 use softedge_workloads::{Tri, Workload, CLASSES, COUNT, SCREEN};
 
 /// Band heights of the screen sweep (16 is also every other run's).
@@ -145,6 +158,60 @@ fn main() -> ! {
         run(&SCREEN, SCREEN.tris);
     }
 
+    // Shapes (issue 16): each alone on the frame, and the frame without
+    // it, by softedge (16-row bands) and by embedded-graphics (both
+    // framebuffers).
+    for shape in ui::Shape::ALL {
+        bench.shape("aa_rgb", shape, ui::BAND_ROWS, || {
+            ui::softedge_shape(shape, &mut bufs).is_ok()
+        });
+        bench.shape("eg_fill", shape, FRAME_ROWS, || {
+            ui::eg_shape(shape, &mut targets.fb);
+            black_box(targets.fb.pixels());
+            true
+        });
+        bench.shape("eg_stock_fb", shape, FRAME_ROWS, || {
+            ui::eg_shape(shape, &mut *targets.stock);
+            black_box(targets.stock.data());
+            true
+        });
+    }
+
+    // Partial redraw (issue 15): the dial scene whole and in the dirty
+    // rectangle. softedge is measured into the one-band DMA buffer and
+    // rendered once more, unmeasured, into a counter of what an SPI
+    // display is sent; embedded-graphics redraws its framebuffer, which is
+    // then sent as one window of the redrawn rectangle.
+    let side = u32::from(FRAME_ROWS);
+    for (what, window) in [("full", None), ("window", Some(ui::DIRTY))] {
+        let mut spi = SpiCounter::new(side, side);
+        let counted = ui::softedge_scene(window, &mut bufs, &mut spi)
+            .ok()
+            .map(|()| spi);
+        bench.redraw(
+            "aa_rgb",
+            what,
+            ui::BAND_ROWS,
+            || ui::softedge_scene_stream(window, &mut bufs).is_ok(),
+            counted,
+        );
+        let mut spi = SpiCounter::new(side, side);
+        let area = window.unwrap_or(spi.bounding_box());
+        // The framebuffer's flush: one window, its pixels in order.
+        let counted = spi.fill_solid(&area, Rgb565::BLACK).ok().map(|()| spi);
+        bench.redraw(
+            "eg_fill",
+            what,
+            FRAME_ROWS,
+            || {
+                ui::eg_scene(window, &mut targets.fb);
+                black_box(targets.fb.pixels());
+                true
+            },
+            counted,
+        );
+    }
+
     Line::new()
         .text("stack_bytes ")
         .dec(fw::stack::used_bytes() as u64)
@@ -195,11 +262,100 @@ impl Bench<'_> {
         rows: u16,
         frame: impl FnOnce() -> bool,
     ) {
-        if !self
-            .selection
-            .wants(renderer, workload.name, tris, workload.tris.len(), rows)
-        {
+        let all = workload.tris.len();
+        let Some((insns, ok)) = self.measure(renderer, workload.name, tris, all, rows, frame)
+        else {
             return;
+        };
+        Self::tag(ok, "insns ")
+            .text(renderer)
+            .text(" ")
+            .text(workload.name)
+            .text(" ")
+            .dec(tris as u64)
+            .text(" ")
+            .dec(u64::from(rows))
+            .text(" ")
+            .dec(insns)
+            .print();
+    }
+
+    /// Measures a frame of one of the [`ui`] shapes and prints
+    /// `shape <renderer> <shape> <n>`.
+    fn shape(&mut self, renderer: &str, shape: ui::Shape, rows: u16, frame: impl FnOnce() -> bool) {
+        let Some((insns, ok)) = self.measure(renderer, shape.name(), 0, 0, rows, frame) else {
+            return;
+        };
+        Self::tag(ok, "shape ")
+            .text(renderer)
+            .text(" ")
+            .text(shape.name())
+            .text(" ")
+            .dec(insns)
+            .print();
+    }
+
+    /// Measures a frame of the [`ui`] scene (`what`: `full` or `window`)
+    /// and prints `redraw <renderer> <what> <n> <windows> <pixels> <bytes>`
+    /// with what `spi` counted the display is sent (`None`: the counting
+    /// run failed, an error).
+    fn redraw(
+        &mut self,
+        renderer: &str,
+        what: &str,
+        rows: u16,
+        frame: impl FnOnce() -> bool,
+        spi: Option<SpiCounter>,
+    ) {
+        let Some((insns, ok)) = self.measure(renderer, what, 0, 0, rows, frame) else {
+            return;
+        };
+        let Some(spi) = spi else {
+            self.ok = false;
+            Line::new()
+                .text("error ")
+                .text(renderer)
+                .text(" ")
+                .text(what)
+                .text(" spi count failed")
+                .print();
+            return;
+        };
+        Self::tag(ok, "redraw ")
+            .text(renderer)
+            .text(" ")
+            .text(what)
+            .text(" ")
+            .dec(insns)
+            .text(" ")
+            .dec(u64::from(spi.windows))
+            .text(" ")
+            .dec(u64::from(spi.pixels))
+            .text(" ")
+            .dec(u64::from(spi.bytes()))
+            .print();
+    }
+
+    /// The line's first word: `tag` for a frame that succeeded, `error `
+    /// (and the run fails) for one that did not.
+    fn tag(ok: bool, tag: &str) -> Line {
+        Line::new().text(if ok { tag } else { "error " })
+    }
+
+    /// Runs `frame` (which returns `false` on failure) between the profile
+    /// marks and returns its instructions and success, or `None` when the
+    /// selection leaves it out.
+    fn measure(
+        &mut self,
+        renderer: &str,
+        workload: &str,
+        tris: usize,
+        all: usize,
+        rows: u16,
+        frame: impl FnOnce() -> bool,
+    ) -> Option<(u64, bool)> {
+        if !self.selection.wants(renderer, workload, tris, all, rows) {
+            return None;
         }
         self.ran += 1;
         let mut frame_ok = false;
@@ -208,22 +364,8 @@ impl Bench<'_> {
             frame_ok = frame();
             bench_profile_off();
         });
-        let line = if frame_ok {
-            Line::new().text("insns ")
-        } else {
-            self.ok = false;
-            Line::new().text("error ")
-        };
-        line.text(renderer)
-            .text(" ")
-            .text(workload.name)
-            .text(" ")
-            .dec(tris as u64)
-            .text(" ")
-            .dec(u64::from(rows))
-            .text(" ")
-            .dec(self.counter.insns(ticks))
-            .print();
+        self.ok &= frame_ok;
+        Some((self.counter.insns(ticks), frame_ok))
     }
 }
 

@@ -6,11 +6,15 @@
 //!   benchmark to another softedge API means rewriting that file only).
 //! - [`eg_side`]: embedded-graphics' aliased `Triangle` fill.
 //! - [`targets`]: the displays both draw into (a one-band DMA buffer, a
-//!   240x240 framebuffer), plain memory.
+//!   240x240 framebuffer), plain memory, and a counter of what an SPI
+//!   display would be sent.
+//! - [`ui`]: a filled circle, a stroked arc gauge, and a dial screen
+//!   redrawn whole or in a dirty rectangle, by both (issues 16 and 15).
 
 pub mod eg_side;
 pub mod softedge_side;
 pub mod targets;
+pub mod ui;
 
 #[cfg(test)]
 mod tests {

@@ -156,6 +156,81 @@ where
     }
 }
 
+/// Command bytes an ST7789 needs to open a window: CASET, RASET, RAMWR.
+pub const WINDOW_COMMAND_BYTES: u32 = 3;
+/// Parameter bytes of those commands: CASET and RASET 4 each (start and
+/// end, 16 bits each), RAMWR none.
+pub const WINDOW_PARAM_BYTES: u32 = 8;
+/// Bytes of an Rgb565 pixel on the wire.
+pub const RGB565_BYTES: u32 = 2;
+
+/// What an SPI display (ST7789-like, Rgb565) would be sent, counted and
+/// not stored: each `fill_contiguous` opens one window and streams its
+/// pixels; each pixel of `draw_iter` is a window of its own.
+pub struct SpiCounter {
+    width: u32,
+    height: u32,
+    /// Windows opened (CASET + RASET + RAMWR each).
+    pub windows: u32,
+    /// Pixels sent.
+    pub pixels: u32,
+}
+
+impl SpiCounter {
+    /// A counter for a `width x height` display, at zero.
+    pub const fn new(width: u32, height: u32) -> Self {
+        Self {
+            width,
+            height,
+            windows: 0,
+            pixels: 0,
+        }
+    }
+
+    /// Bytes on the wire:
+    /// `pixels * 2 + windows * (3 command + 8 parameter bytes)`.
+    pub fn bytes(&self) -> u32 {
+        self.pixels * RGB565_BYTES + self.windows * (WINDOW_COMMAND_BYTES + WINDOW_PARAM_BYTES)
+    }
+}
+
+impl OriginDimensions for SpiCounter {
+    fn size(&self) -> Size {
+        Size::new(self.width, self.height)
+    }
+}
+
+impl DrawTarget for SpiCounter {
+    type Color = Rgb565;
+    type Error = Infallible;
+
+    fn draw_iter<I>(&mut self, pixels: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = Pixel<Rgb565>>,
+    {
+        for _ in pixels {
+            self.windows += 1;
+            self.pixels += 1;
+        }
+        Ok(())
+    }
+
+    /// One window; the area's colours are taken, and counted (the
+    /// renderer resets its band as they are taken; `fill_solid`'s
+    /// iterator never ends, so no more than the area's are).
+    fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = Rgb565>,
+    {
+        self.windows += 1;
+        let n = area.size.width as usize * area.size.height as usize;
+        for _ in colors.into_iter().take(n) {
+            self.pixels += 1;
+        }
+        Ok(())
+    }
+}
+
 /// Width and height of [`Framebuffer`].
 pub const FB_SIDE: usize = 240;
 /// Pixels of [`Framebuffer`].

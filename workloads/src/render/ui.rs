@@ -1,0 +1,411 @@
+//! Shapes and partial redraw (issues 16 and 15): embedded-graphics
+//! primitives drawn by softedge (anti-aliased, `AaStyle` through the
+//! frame loop) and by embedded-graphics itself (aliased, `PrimitiveStyle`
+//! into a framebuffer), on a 240x240 Rgb565 frame, black background.
+//!
+//! - [`Shape`]: one shape alone on the frame: the [`disc`] (a filled
+//!   circle of radius 50 centred on (120, 120)) or the [`gauge`] (an arc
+//!   of radius 90 on the same centre, stroke 12 px, from 135° sweeping
+//!   270° clockwise, butt caps), or nothing (the fixed cost the marginal
+//!   costs are taken against).
+//! - [`softedge_scene`] / [`eg_scene`]: a small dial screen (a panel,
+//!   the gauge's track and value, the disc, a read-out in its centre, a header and two buttons)
+//!   rendered whole or only inside a dirty rectangle ([`DIRTY`]: the
+//!   read-out's 20x20 pixels): softedge with `Renderer::render_window`,
+//!   embedded-graphics by clearing the rectangle in its framebuffer and
+//!   redrawing, clipped to it, the shapes whose bounding box meets it.
+//!
+//! Both sides draw the very same primitives (embedded-graphics geometry)
+//! in the same colours (Rgb565, which softedge takes as sRGB).
+
+use core::hint::black_box;
+
+use embedded_graphics::geometry::AngleUnit;
+use embedded_graphics::pixelcolor::Rgb565;
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::{Arc, Circle, PrimitiveStyle, Rectangle};
+use softedge::prelude::*;
+use softedge::render::Renderer as FrameRenderer;
+use softedge::tone::Curve;
+
+use super::softedge_side::{Buffers, FrameError};
+use super::targets::BandStream;
+use crate::FRAME;
+
+/// Band height of every softedge frame here (as the triangle bench's).
+pub const BAND_ROWS: u16 = 16;
+
+/// The display's tone stage: sRGB γ, Rgb565 (tables in flash).
+static RGB565: Rgb565Format = Rgb565Format::new(Curve::Srgb);
+
+/// Centre of the disc and of the gauge.
+const CENTRE: Point = Point::new(120, 120);
+/// The disc's diameter: radius 50 px.
+const DISC_DIAMETER: u32 = 100;
+/// The gauge's diameter: radius 90 px (the stroke's centre line).
+const GAUGE_DIAMETER: u32 = 180;
+/// The gauge's stroke width, px.
+pub const GAUGE_STROKE: u32 = 12;
+/// Where the gauge starts, degrees clockwise from +x (bottom left).
+const GAUGE_START_DEG: f32 = 135.0;
+/// The gauge's sweep, degrees clockwise.
+const GAUGE_SWEEP_DEG: f32 = 270.0;
+/// The value arc's sweep over the track, degrees (the needle's reading).
+const VALUE_SWEEP_DEG: f32 = 200.0;
+
+/// The filled circle: radius 50, centre (120, 120).
+pub fn disc() -> Circle {
+    Circle::with_center(CENTRE, DISC_DIAMETER)
+}
+
+/// The gauge arc: radius 90, centre (120, 120), from 135° over 270°.
+pub fn gauge() -> Arc {
+    Arc::with_center(
+        CENTRE,
+        GAUGE_DIAMETER,
+        GAUGE_START_DEG.deg(),
+        GAUGE_SWEEP_DEG.deg(),
+    )
+}
+
+const DISC_COLOR: Rgb565 = Rgb565::new(4, 20, 26);
+const GAUGE_COLOR: Rgb565 = Rgb565::new(26, 52, 8);
+
+/// What one shape frame draws.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shape {
+    /// Nothing: the frame's fixed cost.
+    None,
+    /// [`disc`], filled.
+    Disc,
+    /// [`gauge`], stroked [`GAUGE_STROKE`] px, butt caps.
+    Gauge,
+}
+
+impl Shape {
+    /// Every shape, in the order of the output.
+    pub const ALL: [Shape; 3] = [Shape::None, Shape::Disc, Shape::Gauge];
+
+    /// The name printed in the output.
+    pub fn name(self) -> &'static str {
+        match self {
+            Shape::None => "none",
+            Shape::Disc => "circle",
+            Shape::Gauge => "gauge",
+        }
+    }
+}
+
+/// A softedge frame of `shape` alone, 16-row bands, into `bufs.out16`.
+#[inline(never)]
+pub fn softedge_shape(shape: Shape, bufs: &mut Buffers<'_>) -> Result<(), FrameError> {
+    let mut r = renderer(bufs.acc, bufs.cover, bufs.slots3)?;
+    let mut sink = BandStream::new(&mut *bufs.out16, u32::from(FRAME), u32::from(FRAME));
+    let report = r
+        .render(&mut sink, &RGB565, [0; 3], |c| match shape {
+            Shape::None => Ok(()),
+            Shape::Disc => disc().into_styled(AaStyle::with_fill(DISC_COLOR)).draw(c),
+            Shape::Gauge => gauge()
+                .into_styled(AaStyle::with_stroke(GAUGE_COLOR, GAUGE_STROKE))
+                .draw(c),
+        })
+        .map_err(|_| FrameError)?;
+    black_box(report);
+    black_box(sink.pixels());
+    Ok(())
+}
+
+/// An embedded-graphics frame of `shape` alone: `clear`, then the shape
+/// with `PrimitiveStyle` fill or stroke (aliased).
+#[inline(never)]
+pub fn eg_shape<D: DrawTarget<Color = Rgb565>>(shape: Shape, target: &mut D) {
+    // The benchmark's targets are infallible.
+    let _ = target.clear(Rgb565::BLACK);
+    let _ = match shape {
+        Shape::None => Ok(()),
+        Shape::Disc => disc()
+            .into_styled(PrimitiveStyle::with_fill(DISC_COLOR))
+            .draw(target),
+        Shape::Gauge => gauge()
+            .into_styled(PrimitiveStyle::with_stroke(GAUGE_COLOR, GAUGE_STROKE))
+            .draw(target),
+    };
+}
+
+/// The dirty rectangle of the partial redraws: 20x20 at (110, 110), the
+/// read-out in the disc's centre.
+pub const DIRTY: Rectangle = Rectangle::new(Point::new(110, 110), Size::new(20, 20));
+
+/// The panel behind everything.
+const PANEL: Rectangle = Rectangle::new(Point::new(8, 8), Size::new(224, 224));
+/// The header bar, the two buttons and the read-out.
+const BARS: [Rectangle; 4] = [
+    Rectangle::new(Point::new(8, 8), Size::new(224, 20)),
+    Rectangle::new(Point::new(24, 200), Size::new(80, 24)),
+    Rectangle::new(Point::new(136, 200), Size::new(80, 24)),
+    Rectangle::new(Point::new(112, 112), Size::new(16, 16)),
+];
+const PANEL_COLOR: Rgb565 = Rgb565::new(3, 6, 4);
+const TRACK_COLOR: Rgb565 = Rgb565::new(8, 16, 10);
+const BAR_COLORS: [Rgb565; 4] = [
+    Rgb565::new(6, 12, 10),
+    Rgb565::new(20, 40, 20),
+    Rgb565::new(24, 12, 4),
+    Rgb565::WHITE,
+];
+
+/// The value arc: the gauge's first [`VALUE_SWEEP_DEG`] degrees.
+fn value_arc() -> Arc {
+    Arc::with_center(
+        CENTRE,
+        GAUGE_DIAMETER,
+        GAUGE_START_DEG.deg(),
+        VALUE_SWEEP_DEG.deg(),
+    )
+}
+
+/// The scene's shapes, in painter's order: panel, gauge track, value arc,
+/// disc, header, two buttons, read-out (9 shapes).
+pub const SCENE_SHAPES: usize = 9;
+
+/// Draws the scene with softedge into one band's canvas.
+fn softedge_scene_band(c: &mut Canvas<'_, '_, 3, Rgb565>) -> Result<(), DrawError> {
+    PANEL.into_styled(AaStyle::with_fill(PANEL_COLOR)).draw(c)?;
+    gauge()
+        .into_styled(AaStyle::with_stroke(TRACK_COLOR, GAUGE_STROKE))
+        .draw(c)?;
+    value_arc()
+        .into_styled(AaStyle::with_stroke(GAUGE_COLOR, GAUGE_STROKE))
+        .draw(c)?;
+    disc().into_styled(AaStyle::with_fill(DISC_COLOR)).draw(c)?;
+    for (r, col) in BARS.iter().zip(BAR_COLORS) {
+        r.into_styled(AaStyle::with_fill(col)).draw(c)?;
+    }
+    Ok(())
+}
+
+/// The scene by softedge into `target`: the whole frame (`window` `None`,
+/// `Renderer::render`) or only `window` (`Renderer::render_window`), in
+/// 16-row bands (the output buffer of `bufs` is not used).
+#[inline(never)]
+pub fn softedge_scene<D>(
+    window: Option<Rectangle>,
+    bufs: &mut Buffers<'_>,
+    target: &mut D,
+) -> Result<(), FrameError>
+where
+    D: DrawTarget<Color = Rgb565> + OriginDimensions,
+{
+    scene_into(window, bufs.acc, bufs.cover, bufs.slots3, target)
+}
+
+/// A softedge scene frame into the one-band DMA buffer `bufs.out16` (what
+/// is measured).
+pub fn softedge_scene_stream(
+    window: Option<Rectangle>,
+    bufs: &mut Buffers<'_>,
+) -> Result<(), FrameError> {
+    let mut sink = BandStream::new(&mut *bufs.out16, u32::from(FRAME), u32::from(FRAME));
+    scene_into(window, bufs.acc, bufs.cover, bufs.slots3, &mut sink)?;
+    black_box(sink.pixels());
+    Ok(())
+}
+
+fn scene_into<D>(
+    window: Option<Rectangle>,
+    acc: &mut [i32],
+    cover: &mut [i32],
+    slots: &mut [WalkSlot<3>],
+    target: &mut D,
+) -> Result<(), FrameError>
+where
+    D: DrawTarget<Color = Rgb565> + OriginDimensions,
+{
+    let mut r = renderer(acc, cover, slots)?;
+    let report = match window {
+        None => r.render(target, &RGB565, [0; 3], softedge_scene_band),
+        Some(w) => r.render_window(target, &RGB565, [0; 3], w, softedge_scene_band),
+    }
+    .map_err(|_| FrameError)?;
+    black_box(report);
+    Ok(())
+}
+
+/// Draws the scene with embedded-graphics (aliased) into `target`.
+fn eg_scene_shapes<D: DrawTarget<Color = Rgb565>>(target: &mut D, only: Option<Rectangle>) {
+    let meets = |b: Rectangle| only.is_none_or(|d| !d.intersection(&b).is_zero_sized());
+    // The benchmark's targets are infallible.
+    if meets(PANEL.bounding_box()) {
+        let _ = PANEL
+            .into_styled(PrimitiveStyle::with_fill(PANEL_COLOR))
+            .draw(target);
+    }
+    let track = gauge().into_styled(PrimitiveStyle::with_stroke(TRACK_COLOR, GAUGE_STROKE));
+    if meets(track.bounding_box()) {
+        let _ = track.draw(target);
+    }
+    let value = value_arc().into_styled(PrimitiveStyle::with_stroke(GAUGE_COLOR, GAUGE_STROKE));
+    if meets(value.bounding_box()) {
+        let _ = value.draw(target);
+    }
+    let d = disc().into_styled(PrimitiveStyle::with_fill(DISC_COLOR));
+    if meets(d.bounding_box()) {
+        let _ = d.draw(target);
+    }
+    for (r, col) in BARS.iter().zip(BAR_COLORS) {
+        if meets(*r) {
+            let _ = r.into_styled(PrimitiveStyle::with_fill(col)).draw(target);
+        }
+    }
+}
+
+/// The scene by embedded-graphics into a framebuffer: the whole frame
+/// (`clear`, every shape), or only `dirty` (the rectangle filled with the
+/// background, then the shapes whose bounding box meets it, drawn through
+/// `clipped(dirty)`).
+#[inline(never)]
+pub fn eg_scene<D: DrawTarget<Color = Rgb565>>(dirty: Option<Rectangle>, target: &mut D) {
+    match dirty {
+        None => {
+            let _ = target.clear(Rgb565::BLACK);
+            eg_scene_shapes(target, None);
+        }
+        Some(d) => {
+            let _ = target.fill_solid(&d, Rgb565::BLACK);
+            eg_scene_shapes(&mut target.clipped(&d), Some(d));
+        }
+    }
+}
+
+fn renderer<'b>(
+    acc: &'b mut [i32],
+    cover: &'b mut [i32],
+    slots: &'b mut [WalkSlot<3>],
+) -> Result<FrameRenderer<'b, 3>, FrameError> {
+    FrameRenderer::<3>::new(acc, cover, slots, FRAME, FRAME, BAND_ROWS).map_err(|_| FrameError)
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use std::vec;
+    use std::vec::Vec;
+
+    use super::*;
+    use crate::render::softedge_side::{ACC_LEN, COVER_LEN, OUT_LEN, SLOTS};
+    use crate::render::targets::SpiCounter;
+
+    /// A whole 240x240 Rgb565 frame that keeps what it is sent.
+    struct Screen(Vec<u16>);
+
+    impl OriginDimensions for Screen {
+        fn size(&self) -> Size {
+            Size::new(240, 240)
+        }
+    }
+
+    impl DrawTarget for Screen {
+        type Color = Rgb565;
+        type Error = core::convert::Infallible;
+        fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
+            &mut self,
+            px: I,
+        ) -> Result<(), Self::Error> {
+            use embedded_graphics::pixelcolor::IntoStorage;
+            for Pixel(p, c) in px {
+                if let Some(slot) = self.0.get_mut(p.y as usize * 240 + p.x as usize) {
+                    *slot = c.into_storage();
+                }
+            }
+            Ok(())
+        }
+    }
+
+    struct Storage {
+        acc: Vec<i32>,
+        cover: Vec<i32>,
+        out16: Vec<u16>,
+        out8: Vec<u8>,
+        slots3: Vec<WalkSlot<3>>,
+        slots1: Vec<WalkSlot<1>>,
+    }
+
+    impl Storage {
+        fn new() -> Self {
+            Self {
+                acc: vec![0; ACC_LEN],
+                cover: vec![0; COVER_LEN],
+                out16: vec![0; OUT_LEN],
+                out8: vec![0; OUT_LEN],
+                slots3: vec![WalkSlot::EMPTY; SLOTS],
+                slots1: vec![WalkSlot::EMPTY; SLOTS],
+            }
+        }
+
+        fn bufs(&mut self) -> Buffers<'_> {
+            Buffers {
+                acc: &mut self.acc,
+                cover: &mut self.cover,
+                out16: &mut self.out16,
+                out8: &mut self.out8,
+                slots3: &mut self.slots3,
+                slots1: &mut self.slots1,
+            }
+        }
+    }
+
+    #[test]
+    fn every_shape_frame_renders() {
+        let mut s = Storage::new();
+        for shape in Shape::ALL {
+            assert!(
+                softedge_shape(shape, &mut s.bufs()).is_ok(),
+                "{}",
+                shape.name()
+            );
+        }
+    }
+
+    #[test]
+    fn the_dirty_window_gets_the_full_frame_pixels() {
+        let mut s = Storage::new();
+        let mut full = Screen(vec![0; 240 * 240]);
+        assert!(softedge_scene(None, &mut s.bufs(), &mut full).is_ok());
+        let mut part = Screen(vec![0xffff; 240 * 240]);
+        assert!(softedge_scene(Some(DIRTY), &mut s.bufs(), &mut part).is_ok());
+        for (k, (&a, &b)) in full.0.iter().zip(&part.0).enumerate() {
+            let p = Point::new((k % 240) as i32, (k / 240) as i32);
+            if DIRTY.contains(p) {
+                assert_eq!(a, b, "{p:?}");
+            } else {
+                assert_eq!(b, 0xffff, "{p:?} outside the window was sent");
+            }
+        }
+    }
+
+    #[test]
+    fn embedded_graphics_redraws_the_dirty_rectangle_as_the_full_frame() {
+        let mut full = Screen(vec![0; 240 * 240]);
+        eg_scene(None, &mut full);
+        let mut part = Screen(vec![0xffff; 240 * 240]);
+        eg_scene(Some(DIRTY), &mut part);
+        for (k, (&a, &b)) in full.0.iter().zip(&part.0).enumerate() {
+            let p = Point::new((k % 240) as i32, (k / 240) as i32);
+            if DIRTY.contains(p) {
+                assert_eq!(a, b, "{p:?}");
+            } else {
+                assert_eq!(b, 0xffff, "{p:?} outside the rectangle was drawn");
+            }
+        }
+    }
+
+    #[test]
+    fn the_spi_counter_counts_the_window() {
+        let mut s = Storage::new();
+        let mut spi = SpiCounter::new(240, 240);
+        assert!(softedge_scene(Some(DIRTY), &mut s.bufs(), &mut spi).is_ok());
+        // Rows 110..130 in 16-row bands from the window's top: 16 + 4.
+        assert_eq!((spi.windows, spi.pixels), (2, 400));
+        assert_eq!(spi.bytes(), 400 * 2 + 2 * 11);
+    }
+}
