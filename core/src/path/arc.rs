@@ -70,6 +70,7 @@ use crate::geom::PathSink;
 use super::trig::{cos_sin, round_shift, sinc_q31, Q30, TURN};
 use super::vector::{div_round_i64, Pt, Unit, UNIT_X};
 use super::Tolerance;
+use crate::arith::mul_wide;
 
 /// The largest semi-axis or radius, `2^23` fine units (8192 px); larger
 /// ones are limited to it.
@@ -131,10 +132,19 @@ impl EllipseFrame {
     /// The image of the point `(x, y)` of the unit circle's plane, given in
     /// Q30 with `|x|, |y| < 1.12`.
     pub fn map_q30(&self, x: i64, y: i64) -> Pt {
-        let u = (self.a_q8 * x) >> 30; // Q8, below 2^31.2
-        let v = (self.b_q8 * y) >> 30;
-        let px = self.c_q8.x + round_shift(u * self.rot.x - v * self.rot.y, 30);
-        let py = self.c_q8.y + round_shift(u * self.rot.y + v * self.rot.x, 30);
+        let u = scale_q30(self.a_q8, x); // Q8, below 2^31.2
+        let v = scale_q30(self.b_q8, y);
+        // Unrotated (circles, most ellipses): `round_shift(u 2^30, 30)` is
+        // `u`, so the rotation's four products are skipped (same bits).
+        let (dx, dy) = if self.rot == UNIT_X {
+            (u, v)
+        } else {
+            (
+                round_shift(u * self.rot.x - v * self.rot.y, 30),
+                round_shift(u * self.rot.y + v * self.rot.x, 30),
+            )
+        };
+        let (px, py) = (self.c_q8.x + dx, self.c_q8.y + dy);
         // Halves round up (not away from zero): a shape moved by whole
         // fine units then moves every vertex by exactly as much, so its
         // area is the same bits wherever it lies.
@@ -146,6 +156,25 @@ impl EllipseFrame {
     pub fn point(&self, t: i64, scale: i64) -> Pt {
         let (c, s) = cos_sin(t as u32);
         self.map_q30((c * scale) >> 30, (s * scale) >> 30)
+    }
+}
+
+/// `(a x) >> 30` (floor) for a semi-axis `0 <= a <= 2^31` (Q8) and a
+/// Q30 factor `|x| < 2^31`: one 32x32->64 product in halves (no 64-bit
+/// multiply on a Cortex-M0); the floor of a negative product as the
+/// arithmetic shift gives it.
+#[inline]
+fn scale_q30(a: i64, x: i64) -> i64 {
+    match (u32::try_from(a), i32::try_from(x)) {
+        (Ok(a), Ok(x)) => {
+            let p = mul_wide(a, x.unsigned_abs());
+            if x < 0 {
+                -(((p + (1 << 30) - 1) >> 30) as i64)
+            } else {
+                (p >> 30) as i64
+            }
+        }
+        _ => (a * x) >> 30,
     }
 }
 
@@ -197,6 +226,46 @@ pub(crate) fn arc_scale(m: u32, step: i64) -> i64 {
     ((q << 30) / ((1 << 30) + root)) as i64
 }
 
+/// `div_round_i64(step k, d)` for `k = 0, 1, 2, ...` (`d > 0`), by
+/// additions and compares: the numerator `|step| k + d/2` is carried as a
+/// quotient and a remainder, so the vertices of a curve cost no division
+/// each (two per curve).
+struct RoundedMultiples {
+    q: i64,
+    r: i64,
+    dq: i64,
+    dr: i64,
+    d: i64,
+    negative: bool,
+}
+
+impl RoundedMultiples {
+    fn new(step: i64, d: i64) -> Self {
+        let d = d.max(1);
+        let a = step.abs();
+        Self {
+            q: 0,
+            r: d / 2,
+            dq: a / d,
+            dr: a % d,
+            d,
+            negative: step < 0,
+        }
+    }
+
+    /// The next multiple's rounded quotient.
+    fn next(&mut self) -> i64 {
+        let v = if self.negative { -self.q } else { self.q };
+        self.q += self.dq;
+        self.r += self.dr;
+        if self.r >= self.d {
+            self.r -= self.d;
+            self.q += 1;
+        }
+        v
+    }
+}
+
 /// Calls `out` with the `m + 1` vertices of the area-preserving polygon of
 /// an arc from `t0` over `sweep` (binary units, `|sweep| <=` one turn),
 /// both ends on the curve; only the start for a zero sweep.
@@ -230,9 +299,10 @@ pub(crate) fn arc_inner_points(
     let m = arc_count(frame.major(), sweep, tol);
     if m >= 2 && sweep != 0 {
         let g = arc_scale(m, sweep / i64::from(m));
-        for j in 1..m {
-            let t = t0 + div_round_i64(sweep * i64::from(j), i64::from(m));
-            out(frame.point(t, g));
+        let mut t = RoundedMultiples::new(sweep, i64::from(m));
+        t.next();
+        for _ in 1..m {
+            out(frame.point(t0 + t.next(), g));
         }
     }
 }
@@ -250,8 +320,9 @@ pub(crate) fn ellipse_points(
     let n = full_count(frame.major(), tol);
     let f = full_scale(n);
     let turn = if reverse { -TURN } else { TURN };
-    for k in 0..n {
-        out(frame.point(t0 + div_round_i64(turn * i64::from(k), i64::from(n)), f));
+    let mut t = RoundedMultiples::new(turn, i64::from(n));
+    for _ in 0..n {
+        out(frame.point(t0 + t.next(), f));
     }
 }
 
@@ -373,6 +444,57 @@ fn unit_at(t: i64) -> (i64, i64) {
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn scale_q30_is_the_64_bit_floor() {
+        let mut seed = 0x1234_5678_9abc_def1u64;
+        let edges = [0, 1, (1 << 31) - 1, 1 << 31];
+        for _ in 0..100_000 {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            let a = (seed >> 33) as i64;
+            let x = ((seed as u32) as i32) as i64;
+            assert_eq!(scale_q30(a, x), (a * x) >> 30, "{a} {x}");
+        }
+        for a in edges {
+            for x in [
+                0,
+                1,
+                -1,
+                i64::from(i32::MIN),
+                i64::from(i32::MAX),
+                1 << 30,
+                -(1 << 30),
+            ] {
+                assert_eq!(scale_q30(a, x), (a * x) >> 30, "{a} {x}");
+            }
+        }
+    }
+
+    #[test]
+    fn rounded_multiples_are_the_rounded_quotients() {
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        for case in 0..2000 {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            let step = match case % 4 {
+                0 => TURN,
+                1 => -TURN,
+                _ => ((seed >> 16) as i64 % (2 * TURN)) - TURN,
+            };
+            let d = 1 + ((seed >> 40) % 2048) as i64;
+            let mut m = RoundedMultiples::new(step, d);
+            for k in 0..=d {
+                assert_eq!(
+                    m.next(),
+                    div_round_i64(step * k, d),
+                    "step {step} d {d} k {k}"
+                );
+            }
+        }
+    }
     use super::*;
 
     #[test]

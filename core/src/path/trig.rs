@@ -30,6 +30,8 @@
 //! - Square roots: the digit-by-digit method, one result bit per step
 //!   (32 steps for `u64`, 64 for `u128`): exact floors, bounded loops.
 
+use crate::arith::mul_wide;
+
 /// Binary angle units per turn: `2^32`.
 pub(crate) const TURN: i64 = 1 << 32;
 /// A quarter turn in binary units.
@@ -91,36 +93,50 @@ pub(crate) fn div_round(n: i128, d: i128) -> i128 {
 /// (`<= pi/4 * 2^31 < 2^31`).
 #[inline]
 fn octant_radians_q31(f: i64) -> i64 {
-    // f / 2^29 of pi/4 = f * pi / 2^31; in Q31: f * PI_Q61 / 2^61.
-    ((f as i128 * PI_Q61 as i128 + (1i128 << 60)) >> 61) as i64
+    // f / 2^29 of pi/4 = f * pi / 2^31; in Q31: f * PI_Q61 / 2^61,
+    // rounded. With PI_Q61 = h 2^32 + l: (f h 2^32 + f l + 2^60) >> 61 is
+    // (f h + ((f l + 2^60) >> 32)) >> 29 exactly (floors nest), all in
+    // 32x32->64 products: f <= 2^29, so f l + 2^60 < 2^62 and the sum
+    // stays below 2^61.
+    let f = f.clamp(0, 1 << 29) as u32;
+    let (h, l) = ((PI_Q61 >> 32) as u32, PI_Q61 as u32);
+    let low = (mul_wide(f, l) + (1 << 60)) >> 32;
+    ((mul_wide(f, h) + low) >> 29) as i64
+}
+
+/// One Horner step of the series: `1 - x2 acc / d` in Q31. Every value
+/// is in `0..=2^31` (`x2 <= (pi/4)^2 < 2^31`, `acc` a partial sum within
+/// `(0, 1]`), so the product is 32x32->64 and the quotient 32-bit: the
+/// same floors as in 64 bits.
+#[inline]
+fn horner_q31(x2: u32, acc: u32, d: u32) -> u32 {
+    (1 << 31) - ((mul_wide(x2, acc) >> 31) as u32) / d
 }
 
 /// `sin(x)/x` in Q31 from `x^2` in Q31 (`x <= pi/4`), Horner form to
 /// `x^10/11!`.
 #[inline]
-fn sinc_series_q31(x2: i64) -> i64 {
-    let mut acc = Q31;
+fn sinc_series_q31(x2: u32) -> u32 {
     // Denominators (2k)(2k+1) for k = 5, 4, 3, 2, 1.
-    let mut k = 5i64;
-    while k >= 1 {
-        acc = Q31 - ((x2 * acc) >> 31) / ((2 * k) * (2 * k + 1));
-        k -= 1;
-    }
-    acc
+    [110, 72, 42, 20, 6]
+        .into_iter()
+        .fold(1 << 31, |acc, d| horner_q31(x2, acc, d))
 }
 
 /// `cos(x)` in Q31 from `x^2` in Q31 (`x <= pi/4`), Horner form to
 /// `x^12/12!`.
 #[inline]
-fn cos_series_q31(x2: i64) -> i64 {
-    let mut acc = Q31;
+fn cos_series_q31(x2: u32) -> u32 {
     // Denominators (2k-1)(2k) for k = 6, ..., 1.
-    let mut k = 6i64;
-    while k >= 1 {
-        acc = Q31 - ((x2 * acc) >> 31) / ((2 * k - 1) * (2 * k));
-        k -= 1;
-    }
-    acc
+    [132, 90, 56, 30, 12, 2]
+        .into_iter()
+        .fold(1 << 31, |acc, d| horner_q31(x2, acc, d))
+}
+
+/// `x^2` in Q31 for `x` in Q31, `0 <= x <= pi/4`.
+#[inline]
+fn square_q31(x: i64) -> u32 {
+    (mul_wide(x as u32, x as u32) >> 31) as u32
 }
 
 /// `(cos a, sin a)` in Q30 for the binary angle `a` (`2^32` per turn).
@@ -132,9 +148,9 @@ pub(crate) fn cos_sin(a: u32) -> (i64, i64) {
     let f = i64::from(a & ((1 << 29) - 1));
     let f = if octant & 1 == 1 { (1 << 29) - f } else { f };
     let x = octant_radians_q31(f);
-    let x2 = (x * x) >> 31;
-    let s = round_shift((x * sinc_series_q31(x2)) >> 31, 1);
-    let c = round_shift(cos_series_q31(x2), 1);
+    let x2 = square_q31(x);
+    let s = round_shift((mul_wide(x as u32, sinc_series_q31(x2)) >> 31) as i64, 1);
+    let c = round_shift(i64::from(cos_series_q31(x2)), 1);
     match octant {
         0 => (c, s),
         1 => (s, c),
@@ -155,7 +171,7 @@ pub(crate) fn cos_sin(a: u32) -> (i64, i64) {
 pub(crate) fn sinc_q31(a: i64) -> i64 {
     let a = a.clamp(0, 1 << 29);
     let x = octant_radians_q31(a);
-    sinc_series_q31((x * x) >> 31)
+    i64::from(sinc_series_q31(square_q31(x)))
 }
 
 /// Radians in Q31 of `a` binary units, `|a| <= 2^32` (one turn).
@@ -243,6 +259,68 @@ pub(crate) fn ceil_sqrt_u64(v: u64) -> u64 {
 
 #[cfg(test)]
 mod tests {
+
+    /// The series in plain 64- and 128-bit arithmetic, as first written:
+    /// the 32-bit forms must give the same bits.
+    fn reference_cos_sin_sinc(a: u32) -> (i64, i64, i64) {
+        let octant = a >> 29;
+        let f = i64::from(a & ((1 << 29) - 1));
+        let f = if octant & 1 == 1 { (1 << 29) - f } else { f };
+        let x = ((f as i128 * PI_Q61 as i128 + (1i128 << 60)) >> 61) as i64;
+        let x2 = (x * x) >> 31;
+        let series = |k0: i64, odd: bool| {
+            let mut acc = Q31;
+            let mut k = k0;
+            while k >= 1 {
+                let d = if odd {
+                    (2 * k) * (2 * k + 1)
+                } else {
+                    (2 * k - 1) * (2 * k)
+                };
+                acc = Q31 - ((x2 * acc) >> 31) / d;
+                k -= 1;
+            }
+            acc
+        };
+        let sinc = series(5, true);
+        let s = round_shift((x * sinc) >> 31, 1);
+        let c = round_shift(series(6, false), 1);
+        let (c, s) = match octant {
+            0 => (c, s),
+            1 => (s, c),
+            2 => (-s, c),
+            3 => (-c, s),
+            4 => (-c, -s),
+            5 => (-s, -c),
+            6 => (s, -c),
+            _ => (c, -s),
+        };
+        (c, s, sinc)
+    }
+
+    #[test]
+    fn thirty_two_bit_series_give_the_64_bit_bits() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let check = |a: u32| {
+            let (c, s, _) = reference_cos_sin_sinc(a);
+            assert_eq!(cos_sin(a), (c, s), "angle {a}");
+            let f = a & ((1 << 29) - 1);
+            if f != 0 {
+                let (_, _, sinc) = reference_cos_sin_sinc(f);
+                assert_eq!(sinc_q31(i64::from(f)), sinc, "sinc at {f}");
+            }
+        };
+        for a in [0, 1, 2, (1 << 29) - 1, 1 << 29, (1 << 29) + 1, u32::MAX] {
+            check(a);
+        }
+        for _ in 0..200_000 {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            check((seed >> 32) as u32);
+        }
+        assert_eq!(sinc_q31(1 << 29), reference_cos_sin_sinc(1 << 29).2);
+    }
     use super::*;
 
     #[test]
