@@ -104,33 +104,52 @@ fn octant_radians_q31(f: i64) -> i64 {
     ((mul_wide(f, h) + low) >> 29) as i64
 }
 
-/// One Horner step of the series: `1 - x2 acc / d` in Q31. Every value
+/// `floor(v / D)` for `v < 2^31` by a multiply and a shift
+/// (Granlund–Montgomery): with `l = ceil(log2 D)`, `s = 31 + l` and
+/// `M = ceil(2^s / D)`, `M D - 2^s < D <= 2^l = 2^(s - 31)`, which makes
+/// `floor(v M / 2^s)` the quotient for every `v < 2^31`; `M < 2^32`.
+struct DivBy<const D: u32>;
+
+impl<const D: u32> DivBy<D> {
+    const S: u32 = 31 + (32 - (D - 1).leading_zeros());
+    const M: u32 = (1u64 << Self::S).div_ceil(D as u64) as u32;
+
+    #[inline(always)]
+    fn of(v: u32) -> u32 {
+        (mul_wide(v, Self::M) >> Self::S) as u32
+    }
+}
+
+/// One Horner step of the series: `1 - x2 acc / D` in Q31. Every value
 /// is in `0..=2^31` (`x2 <= (pi/4)^2 < 2^31`, `acc` a partial sum within
-/// `(0, 1]`), so the product is 32x32->64 and the quotient 32-bit: the
+/// `(0, 1]`), so the product is 32x32->64 and `x2 acc / 2^31 < 2^31`: the
 /// same floors as in 64 bits.
-#[inline]
-fn horner_q31(x2: u32, acc: u32, d: u32) -> u32 {
-    (1 << 31) - ((mul_wide(x2, acc) >> 31) as u32) / d
+#[inline(always)]
+fn horner_q31<const D: u32>(x2: u32, acc: u32) -> u32 {
+    (1 << 31) - DivBy::<D>::of((mul_wide(x2, acc) >> 31) as u32)
 }
 
 /// `sin(x)/x` in Q31 from `x^2` in Q31 (`x <= pi/4`), Horner form to
-/// `x^10/11!`.
+/// `x^10/11!`: denominators `(2k)(2k+1)` for `k = 5, 4, 3, 2, 1`.
 #[inline]
 fn sinc_series_q31(x2: u32) -> u32 {
-    // Denominators (2k)(2k+1) for k = 5, 4, 3, 2, 1.
-    [110, 72, 42, 20, 6]
-        .into_iter()
-        .fold(1 << 31, |acc, d| horner_q31(x2, acc, d))
+    let acc = horner_q31::<110>(x2, 1 << 31);
+    let acc = horner_q31::<72>(x2, acc);
+    let acc = horner_q31::<42>(x2, acc);
+    let acc = horner_q31::<20>(x2, acc);
+    horner_q31::<6>(x2, acc)
 }
 
 /// `cos(x)` in Q31 from `x^2` in Q31 (`x <= pi/4`), Horner form to
-/// `x^12/12!`.
+/// `x^12/12!`: denominators `(2k-1)(2k)` for `k = 6, ..., 1`.
 #[inline]
 fn cos_series_q31(x2: u32) -> u32 {
-    // Denominators (2k-1)(2k) for k = 6, ..., 1.
-    [132, 90, 56, 30, 12, 2]
-        .into_iter()
-        .fold(1 << 31, |acc, d| horner_q31(x2, acc, d))
+    let acc = horner_q31::<132>(x2, 1 << 31);
+    let acc = horner_q31::<90>(x2, acc);
+    let acc = horner_q31::<56>(x2, acc);
+    let acc = horner_q31::<30>(x2, acc);
+    let acc = horner_q31::<12>(x2, acc);
+    horner_q31::<2>(x2, acc)
 }
 
 /// `x^2` in Q31 for `x` in Q31, `0 <= x <= pi/4`.
@@ -296,6 +315,41 @@ mod tests {
             _ => (c, -s),
         };
         (c, s, sinc)
+    }
+
+    #[test]
+    fn division_by_multiplication_is_exact_below_2_pow_31() {
+        fn check<const D: u32>() {
+            let mut seed = u64::from(D);
+            let mut v_of = |k: u32| match k {
+                0 => 0,
+                1 => (1 << 31) - 1,
+                2..=200 => (k - 2) * D + (k % 2) * (D - 1),
+                _ => {
+                    seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1);
+                    (seed >> 33) as u32
+                }
+            };
+            for k in 0..20_000 {
+                let v = v_of(k).min((1 << 31) - 1);
+                assert_eq!(DivBy::<D>::of(v), v / D, "{v} / {D}");
+                // Just below and at every multiple near the top.
+                let top = ((1u32 << 31) - 1) / D * D;
+                assert_eq!(DivBy::<D>::of(top), top / D);
+                assert_eq!(DivBy::<D>::of(top - 1), (top - 1) / D);
+            }
+        }
+        check::<2>();
+        check::<6>();
+        check::<12>();
+        check::<20>();
+        check::<30>();
+        check::<42>();
+        check::<56>();
+        check::<72>();
+        check::<90>();
+        check::<110>();
+        check::<132>();
     }
 
     #[test]
