@@ -155,14 +155,14 @@ impl EllipseFrame {
     /// `scale` (Q30).
     pub fn point(&self, t: i64, scale: i64) -> Pt {
         let (c, s) = cos_sin(t as u32);
-        self.map_q30((c * scale) >> 30, (s * scale) >> 30)
+        self.map_q30(scale_q30(scale, c), scale_q30(scale, s))
     }
 }
 
-/// `(a x) >> 30` (floor) for a semi-axis `0 <= a <= 2^31` (Q8) and a
-/// Q30 factor `|x| < 2^31`: one 32x32->64 product in halves (no 64-bit
-/// multiply on a Cortex-M0); the floor of a negative product as the
-/// arithmetic shift gives it.
+/// `(a x) >> 30` (floor) for `0 <= a <= 2^31` (a semi-axis in Q8, or a
+/// Q30 scale) and `|x| < 2^31` (a Q30 factor): one 32x32->64 product in
+/// halves (no 64-bit multiply on a Cortex-M0); the floor of a negative
+/// product as the arithmetic shift gives it. Other values: in 64 bits.
 #[inline]
 fn scale_q30(a: i64, x: i64) -> i64 {
     match (u32::try_from(a), i32::try_from(x)) {
