@@ -305,3 +305,33 @@ fn uniform_is_exact() {
         );
     }
 }
+
+/// Through the renderer, as `&Rgb565Format` is used: a `static` profile by
+/// reference; a flat dark background comes out as the profile's pattern
+/// at each pixel's frame position, band after band.
+#[test]
+fn the_renderer_takes_a_static_dither_profile() {
+    use embedded_graphics::mock_display::MockDisplay;
+    use softedge::prelude::*;
+    static DITHER: Rgb565Dither = Rgb565Dither::new(Curve::Srgb);
+    const W: u16 = 16;
+    const H: u16 = 12;
+    const ROWS: u16 = 5;
+    let mut acc = vec![0i32; BandBuffer::<3>::acc_len(W, ROWS)];
+    let mut cover = vec![0i32; BandBuffer::<3>::cover_len(W, ROWS)];
+    let mut slots = [WalkSlot::<3>::EMPTY; 2];
+    let mut r = Renderer::new(&mut acc, &mut cover, &mut slots, W, H, ROWS).unwrap();
+    let mut display = MockDisplay::<Rgb565>::new();
+    let bg = [60u16, 300, 4095];
+    r.render(&mut display, &DITHER, bg, |_| Ok::<(), ()>(()))
+        .unwrap();
+    for y in 0..i32::from(H) {
+        for x in 0..i32::from(W) {
+            let want = Profile::color(&&DITHER, x, y, bg);
+            assert_eq!(
+                display.get_pixel(embedded_graphics::prelude::Point::new(x, y)),
+                Some(want)
+            );
+        }
+    }
+}
