@@ -19,7 +19,7 @@ background = "{bg}"
 [render]
 gamma = {'"srgb"' if not oled else '"srgb"'}
 band_rows = {16 if not oled else 8}
-""")
+{'' if oled else 'dither = "ordered"  # the dark radial dial face would band in 5-6-5 steps' + chr(10)}""")
     cx, cy, R = L['dial']
     fg = "#ffffff"
     def col(rgb, grey):

@@ -3,7 +3,7 @@
 //!
 //! The format is documented in the README ("Scene files"); in short:
 //! `[display]` (size, pixel format, background), `[render]` (anti-aliasing,
-//! pixel model, γ, band height, the lightness post-filter), 2D primitives `[[triangle]]`,
+//! pixel model, γ, band height, the lightness post-filter, dithering), 2D primitives `[[triangle]]`,
 //! `[[polygon]]`, `[[line]]` in pixel units, and 3D objects `[[object]]`
 //! seen by a `[camera]` and lit by a `[light]`.
 //!
@@ -106,6 +106,17 @@ pub enum DisplayFormat {
     Binary,
 }
 
+/// `[render] dither`: the tone stage's dithering of a multi-bit display.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Dither {
+    /// Each pixel rounded to the nearest code (`softedge::tone::format`).
+    #[default]
+    None,
+    /// Ordered dithering of the γ code over a 4x4 Bayer tile
+    /// (`softedge::tone::ordered`): rgb565 and gray4 only.
+    Ordered,
+}
+
 impl DisplayFormat {
     /// The name used in scene files.
     pub fn name(self) -> &'static str {
@@ -169,6 +180,8 @@ pub struct SceneFile {
     /// `[render] lightness_filter`: run the CIELAB L* filter of seed 002
     /// between accumulation and tone.
     pub lightness_filter: bool,
+    /// `[render] dither`.
+    pub dither: Dither,
     /// The frame, ready for [`crate::scene::render`].
     pub frame: Frame,
     /// The tables the primitives of `frame` came from, in file order.
@@ -214,6 +227,7 @@ pub fn parse(path: &Path, text: &str) -> Result<SceneFile, Diagnostic> {
         .and_then(|r| r.get_ref().lightness_filter.as_ref())
         .is_some_and(|f| *f.get_ref());
     let (hsr, section) = ck.hsr(file.render.as_ref())?;
+    let dither = ck.dither(file.render.as_ref(), format)?;
     let d = file.display.get_ref();
     let width = ck.int(&d.width, "display.width", 1, MAX_SIDE)? as u16;
     let height = ck.int(&d.height, "display.height", 1, MAX_SIDE)? as u16;
@@ -240,6 +254,7 @@ pub fn parse(path: &Path, text: &str) -> Result<SceneFile, Diagnostic> {
         format,
         curve,
         lightness_filter,
+        dither,
         frame,
         origins,
         primitive_origins,
@@ -284,7 +299,7 @@ impl SceneFile {
 
     /// The display codes of a rendered frame, through `softedge::tone`.
     pub fn tone(&self, lin: &Linear) -> DisplayCodes {
-        display::tone(lin, self.format, self.curve)
+        display::tone(lin, self.format, self.curve, self.dither)
     }
 
     /// The table primitive `index` of the frame came from.
@@ -681,6 +696,30 @@ impl Checker<'_> {
         Ok((style, curve, rows))
     }
 
+    /// `[render] dither` (default: none; `ordered` on rgb565 and gray4).
+    fn dither(&self, r: Option<&Spanned<raw::Render>>, format: DisplayFormat) -> Checked<Dither> {
+        let Some(d) = r.and_then(|r| r.get_ref().dither.as_ref()) else {
+            return Ok(Dither::None);
+        };
+        match (d.get_ref().as_str(), format) {
+            ("none", _) => Ok(Dither::None),
+            ("ordered", DisplayFormat::Rgb565 | DisplayFormat::Gray4) => Ok(Dither::Ordered),
+            ("ordered", f) => self.err(
+                d.span(),
+                "render.dither",
+                format!(
+                    "ordered dithering is for rgb565 and gray4 displays, not {}",
+                    f.name()
+                ),
+            ),
+            (other, _) => self.err(
+                d.span(),
+                "render.dither",
+                format!("unknown dither `{other}`; one of none, ordered"),
+            ),
+        }
+    }
+
     /// `[render] blend` (default: over).
     fn blend(&self, r: Option<&Spanned<raw::Render>>) -> Checked<Blend> {
         let b = r.and_then(|r| r.get_ref().blend.as_ref());
@@ -1059,5 +1098,38 @@ mod tests {
             let f = parse_str(&format!("{HEAD}[render]\ngamma = {g}\n")).unwrap();
             assert_eq!(f.curve, want, "{g}");
         }
+    }
+
+    #[test]
+    fn ordered_dither_spreads_a_dark_rgb565_grey_over_two_codes() {
+        let scene = |dither: &str| {
+            let text = format!(
+                "[display]\nwidth = 8\nheight = 8\nformat = \"rgb565\"\nbackground = [60, 60, 60]\n\
+                 [render]\ngamma = \"srgb\"\n{dither}"
+            );
+            let f = parse_str(&text).unwrap();
+            let lin = f.render_linear().unwrap();
+            f.tone(&lin).codes
+        };
+        let flat = scene("");
+        assert!(flat.iter().all(|&c| c == flat[0]));
+        assert_eq!(scene("dither = \"none\"\n"), flat);
+        let red = |c: &u16| u32::from(c >> 11);
+        let dithered = scene("dither = \"ordered\"\n");
+        // 31 V(60 / 4095) = 3.92 on sRGB: the fine table's 31 / 8 codes,
+        // 14 of every 16 pixels red 4, 2 red 3.
+        assert_eq!(dithered.iter().map(red).sum::<u32>(), 4 * 62);
+        assert!(dithered.iter().map(red).all(|r| r == 3 || r == 4));
+    }
+
+    #[test]
+    fn ordered_dither_is_refused_where_it_does_not_apply() {
+        let e = parse_str(&format!("{HEAD}[render]\ndither = \"ordered\"\n")).unwrap_err();
+        assert_eq!(e.field, "render.dither");
+        assert!(e.message.contains("not gray8"), "{}", e.message);
+        let e = parse_str(&format!("{HEAD}[render]\ndither = \"bayer\"\n")).unwrap_err();
+        assert!(e.message.contains("unknown dither"), "{}", e.message);
+        let gray4 = "[display]\nwidth = 4\nheight = 4\nformat = \"gray4\"\n[render]\ndither = \"ordered\"\n";
+        assert_eq!(parse_str(gray4).unwrap().dither, Dither::Ordered);
     }
 }

@@ -75,8 +75,9 @@ impl Bayer8 {
         Bayer8 { thresholds }
     }
 
-    /// `M(x, y)` in `0..64`, for `x, y < 8`.
-    const fn level(x: usize, y: usize) -> usize {
+    /// `M(x, y)` in `0..64`, for `x, y < 8` (crate-internal: the
+    /// [`ordered`](super::ordered) profiles take their 4x4 matrix from it).
+    pub(super) const fn level(x: usize, y: usize) -> usize {
         let mut m = 0;
         let mut bit = 0;
         // Bit 0 of (x, y) picks the coarsest D2 term (weight 16), bit 2 the finest.

@@ -17,6 +17,9 @@
 //!   feature).
 //! - [`dither`]: rows of `lin12` to 1-bit pixels, ordered (Bayer 8x8) or
 //!   error diffusion (Floyd–Steinberg), in linear light.
+//! - [`ordered`]: rows of `lin12` to Rgb565 (and Gray4) through a finer
+//!   γ code and a 4x4 Bayer threshold: no banding, the tile averages to the
+//!   finer code (issue 16).
 //! - [`bits`]: the bit-depth calculator of eqs. 9-10 and `m = ln K / ln(1+δ)`
 //!   (a planning tool, `f64`).
 //!
@@ -37,12 +40,14 @@ pub(crate) mod fixpow;
 pub mod format;
 pub mod gamma;
 pub mod log_code;
+pub mod ordered;
 pub mod profile;
 
 pub use bits::{levels, BitDepth};
 pub use dither::{Bayer8, FloydSteinberg};
 pub use gamma::{Curve, Gamma, GammaLut};
 pub use log_code::{GaussLog, LogOutputLut, LogScale, LogValue, PotentiationLut};
+pub use ordered::{DitherLut, Gray4Dither, Rgb565Dither};
 pub use profile::{DiffusionProfile, Profile, ToneRow};
 
 pub use crate::shade::LIN_MAX;

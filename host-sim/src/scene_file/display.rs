@@ -2,7 +2,9 @@
 //!
 //! [`tone`] runs `softedge::tone` on the rendered rows, top to bottom, as
 //! firmware does after each band: the γ table of the format's bit depth
-//! (Gray8, Gray4, Rgb888, Rgb565) or, for a 1-bit display, Floyd–Steinberg
+//! (Gray8, Gray4, Rgb888, Rgb565; with `[render] dither = "ordered"` the
+//! ordered-dithering profiles of `softedge::tone::ordered` for Rgb565 and
+//! Gray4, at each pixel's frame position) or, for a 1-bit display, Floyd–Steinberg
 //! error diffusion in linear light with one error row for the whole frame
 //! (so the error crosses band boundaries as it must). The renderer's output
 //! does not depend on the band height, so toning its rows in order is the
@@ -19,9 +21,10 @@
 //! - [`pnm16`]: the linear values before the tone stage as 16-bit Netpbm.
 
 use softedge::tone::format::{Gray4Format, Gray8Format, Rgb565Format, Rgb888Format, ToneFormat};
+use softedge::tone::ordered::{Gray4Dither, Rgb565Dither};
 use softedge::tone::{Curve, FloydSteinberg};
 
-use super::DisplayFormat;
+use super::{DisplayFormat, Dither};
 use crate::image::{Channels, Image8, LinImage};
 
 /// A rendered frame, linear 12-bit, before the tone stage.
@@ -66,10 +69,13 @@ pub struct DisplayCodes {
 }
 
 /// Runs the display's tone stage over `lin`.
-pub fn tone(lin: &Linear, format: DisplayFormat, curve: Curve) -> DisplayCodes {
+pub fn tone(lin: &Linear, format: DisplayFormat, curve: Curve, dither: Dither) -> DisplayCodes {
     let (width, height) = lin.size();
-    let codes = match (lin, format) {
-        (Linear::Gray(img), DisplayFormat::Binary) => {
+    // Frame position of the k-th pixel, for ordered dithering.
+    let w = width.max(1) as usize;
+    let at = |k: usize| ((k % w) as i32, (k / w) as i32);
+    let codes = match (lin, format, dither) {
+        (Linear::Gray(img), DisplayFormat::Binary, _) => {
             let mut err = vec![0i16; width as usize];
             let mut fs = FloydSteinberg::new(&mut err);
             let px: Vec<[u16; 1]> = img.pixels().collect();
@@ -81,19 +87,39 @@ pub fn tone(lin: &Linear, format: DisplayFormat, curve: Curve) -> DisplayCodes {
             }
             codes
         }
-        (Linear::Gray(img), DisplayFormat::Gray4) => {
+        (Linear::Gray(img), DisplayFormat::Gray4, Dither::Ordered) => {
+            let d = Gray4Dither::new(curve);
+            img.pixels()
+                .enumerate()
+                .map(|(k, [i])| {
+                    let (x, y) = at(k);
+                    u16::from(d.lut().code(i, x, y))
+                })
+                .collect()
+        }
+        (Linear::Gray(img), DisplayFormat::Gray4, Dither::None) => {
             let f = Gray4Format::new(curve);
             img.pixels().map(|p| u16::from(f.code(p))).collect()
         }
-        (Linear::Gray(img), _) => {
+        (Linear::Gray(img), _, _) => {
             let f = Gray8Format::new(curve);
             img.pixels().map(|p| u16::from(f.code(p))).collect()
         }
-        (Linear::Rgb(img), DisplayFormat::Rgb565) => {
+        (Linear::Rgb(img), DisplayFormat::Rgb565, Dither::Ordered) => {
+            let d = Rgb565Dither::new(curve);
+            img.pixels()
+                .enumerate()
+                .map(|(k, p)| {
+                    let (x, y) = at(k);
+                    d.code(x, y, p)
+                })
+                .collect()
+        }
+        (Linear::Rgb(img), DisplayFormat::Rgb565, Dither::None) => {
             let f = Rgb565Format::new(curve);
             img.pixels().map(|p| f.code(p)).collect()
         }
-        (Linear::Rgb(img), _) => {
+        (Linear::Rgb(img), _, _) => {
             let f = Rgb888Format::new(curve);
             img.pixels()
                 .flat_map(|p| f.code(p).map(u16::from))

@@ -163,6 +163,7 @@ pub struct Render {
     pub hsr: Option<Spanned<String>>,
     pub section: Option<Num>,
     pub blend: Option<Spanned<String>>,
+    pub dither: Option<Spanned<String>>,
 }
 
 /// `[[triangle]]`.
