@@ -28,8 +28,8 @@ band_rows = {16 if not oled else 8}
     face = ('color = "#000000"' if oled else
             f'gradient = {{ kind = "radial", centre = {pt(cx, cy - R/3)}, radius = {f(1.3*R)}, '
             'stops = [{ offset = 0, color = "#34404e" }, { offset = 1, color = "#10161e" }] }')
-    out.append(f"""# The dial: a face (a radial gradient, lit from above), a rim, 41 ticks (long every 5th) and the places of
-# its numbers (small discs where the labels go).
+    out.append(f"""# The dial: a face (a radial gradient, lit from above), a rim, 41 ticks (long every 5th) and
+# its numbers.
 [[circle]]
 centre = {pt(cx, cy)}
 radius = {f(R)}
@@ -54,10 +54,13 @@ stroke_width = {f(w)}
 """)
         if long and not oled:
             rn = R - L['tick'][3]
-            out.append(f"""[[circle]]
-centre = {pt(cx + rn*math.cos(a), cy + rn*math.sin(a))}
-radius = {f(L['place'])}
-color = "#3a4656"
+            out.append(f"""[[text]]
+text = "{i // 5 * 10}"
+position = {pt(cx + rn*math.cos(a), cy + rn*math.sin(a))}
+size = {f(L['place'])}
+align = "center"
+baseline = "middle"
+color = "#c8d2dc"
 """)
     # needle at 62% of the range, over the dial
     v = 0.62
@@ -98,6 +101,13 @@ sweep = {f(270*0.7)}
 stroke_color = "{col('#30d080', '#ffffff')}"
 stroke_width = {f(8*k if not oled else 5)}
 cap = "round"
+[[text]]
+text = "70"
+position = {pt(gx, gy)}
+size = {f(L['value'])}
+align = "center"
+baseline = "middle"
+color = "{col('#e8eef4', '#ffffff')}"
 """)
     # rounded button
     bx, by, bw, bh = L['button']
@@ -119,6 +129,13 @@ radius = {f(L['bradius'])}
 stroke_color = "{col('#90b8f0', '#ffffff')}"
 stroke_width = {f(1.5*k if not oled else 1)}
 stroke_alignment = "inside"
+[[text]]
+text = "START"
+position = {pt(bx + bw/2, by + bh/2)}
+size = {f(L['label'])}
+align = "center"
+baseline = "middle"
+color = "#ffffff"
 """)
     if oled:
         return "\n".join(out)
@@ -145,21 +162,22 @@ cap = "round"
 """)
     return "\n".join(out)
 
-TFT = dict(dial=(78,80,62), tick=(12,7,3,22), needle=(8,10,3), hub=6, place=3,
+TFT = dict(dial=(78,80,62), tick=(12,7,3,22), needle=(8,10,3), hub=6, place=11, value=18, label=14,
            gauge=(180,62,34), button=(138,150,86,34), bradius=10,
            chart=(20,205,13,14), band=(16,186,112,40,4))
-OLED = dict(dial=(31,33,29), tick=(6,3,1,0), needle=(5,4,1.5), hub=3, place=0,
+OLED = dict(dial=(31,33,29), tick=(6,3,1,0), needle=(5,4,1.5), hub=3, place=0, value=12, label=10,
             gauge=(97,24,18), button=(72,48,52,14), bradius=5,
             chart=(0,-100,0,0), band=(0,-100,0,0,0))
-hdr = """# A small instrument panel in painter's order: a dial with ticks and the
-# places of its numbers, a needle over it, an arc gauge, a rounded button
-# with a translucent shadow, a chart line. Shapes, strokes and opacity of
-# scene files; generated once (coordinates rounded to 1/1000 px).
+hdr = """# A small instrument panel in painter's order: a dial with ticks and its
+# numbers, a needle over it, an arc gauge with its value, a rounded button
+# with a translucent shadow and a label, a chart line. Shapes, strokes,
+# gradients, text and opacity of scene files; generated once (coordinates
+# rounded to 1/1000 px).
 """
 open('examples/scenes/panel.toml','w').write(hdr + panel(240,240,"rgb565","#0a0e14",1,L=TFT))
 hdr2 = """# The instrument panel of panel.toml on a 128x64 1-bit OLED (Floyd-
 # Steinberg in linear light), laid out for its 128x64 pixels, white on
-# black: dial, needle, arc gauge, button.
+# black: dial, needle, arc gauge and its value, button and its label.
 """
 s = panel(128,64,"binary","#000000",0.5, oled=True, L=OLED)
 open('examples/scenes/panel_oled.toml','w').write(hdr2 + s)
