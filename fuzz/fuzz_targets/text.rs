@@ -24,7 +24,9 @@
 use libfuzzer_sys::fuzz_target;
 use softedge::canvas::Canvas;
 use softedge::geom::FinePoint;
-use softedge::text::{Alignment, Baseline, Font, FontStyle, LineHeight, Sharpen, Text, TextSize, TextStyle};
+use softedge::text::{
+    Alignment, Baseline, Font, FontStyle, LineHeight, Sharpen, Text, TextSize, TextStyle,
+};
 use softedge::{Band, BandBuffer};
 
 fuzz_target!(|data: &[u8]| {
@@ -48,10 +50,19 @@ fuzz_target!(|data: &[u8]| {
     let style = FontStyle::<1>::new(&font, 1, [4095])
         .with_size(TextSize::from_64ths(u32::from(*size) * 16 + 1))
         .with_kerning(opts & 1 != 0)
-        .with_sharpen(if opts & 2 != 0 { Sharpen::GRID } else { Sharpen::NONE });
+        .with_sharpen(if opts & 2 != 0 {
+            Sharpen::GRID
+        } else {
+            Sharpen::NONE
+        });
     let layout = TextStyle::new(
         [Alignment::Left, Alignment::Center, Alignment::Right][usize::from(opts >> 2) % 3],
-        [Baseline::Top, Baseline::Bottom, Baseline::Middle, Baseline::Alphabetic][usize::from(opts >> 4) % 4],
+        [
+            Baseline::Top,
+            Baseline::Bottom,
+            Baseline::Middle,
+            Baseline::Alphabetic,
+        ][usize::from(opts >> 4) % 4],
         LineHeight::Percent(u32::from(*opts)),
     );
     let t = Text::with_text_style(
