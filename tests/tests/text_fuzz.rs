@@ -184,3 +184,27 @@ fn random_bytes_are_refused_or_survive() {
         }
     }
 }
+
+/// Found by the `text` fuzz target: a font collection (`ttcf`) claiming
+/// 0xe2000000 faces in a 60-byte file (their offsets would take 14 GB). ttf-parser checks that read only
+/// with a `debug_assert` (a panic in debug builds, such as this test's);
+/// `Font::new` refuses the file first.
+#[test]
+fn a_collection_whose_faces_run_past_the_file_is_malformed() {
+    let mut file = b"ttcf".to_vec();
+    file.extend_from_slice(&[0x00, 0xe3, 0xe2, 0xe2, 0xe2, 0x00, 0x00, 0x00]);
+    file.resize(60, 0xe2);
+    assert_eq!(
+        Font::new(&file).err(),
+        Some(softedge::text::FontError::Malformed)
+    );
+    // A collection header cut short is malformed too; one that fits is
+    // left to the parser (no faces here: not a font).
+    assert_eq!(
+        Font::new(b"ttcf\x00\x01").err(),
+        Some(softedge::text::FontError::Malformed)
+    );
+    let mut one = b"ttcf\x00\x01\x00\x00\x00\x00\x00\x01".to_vec();
+    one.extend_from_slice(&[0, 0, 0, 16]);
+    assert!(Font::new(&one).is_err());
+}

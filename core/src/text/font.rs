@@ -99,6 +99,21 @@ impl fmt::Debug for Font<'_> {
     }
 }
 
+/// False for a font collection (`ttcf`) whose count of faces runs past the
+/// file: refused before the parser reads the faces' offsets (an
+/// out-of-file read it checks only with a `debug_assert`, so a debug build
+/// would panic; found by the `text` fuzz target).
+fn collection_fits(data: &[u8]) -> bool {
+    match (data.get(0..4), data.get(8..12)) {
+        (Some(b"ttcf"), Some(&[a, b, c, d])) => {
+            let faces = u64::from(u32::from_be_bytes([a, b, c, d]));
+            12 + 4 * faces <= data.len() as u64
+        }
+        (Some(b"ttcf"), _) => false,
+        _ => true,
+    }
+}
+
 impl<'a> Font<'a> {
     /// Parses the first face of a font file.
     pub fn new(data: &'a [u8]) -> Result<Self, FontError> {
@@ -108,6 +123,9 @@ impl<'a> Font<'a> {
     /// Parses face `index` of a font file or collection.
     pub fn with_index(data: &'a [u8], index: u32) -> Result<Self, FontError> {
         use ttf_parser::FaceParsingError as E;
+        if !collection_fits(data) {
+            return Err(FontError::Malformed);
+        }
         let face = Face::parse(data, index).map_err(|e| match e {
             E::UnknownMagic => FontError::UnknownMagic,
             E::FaceIndexOutOfBounds => FontError::FaceIndex,
