@@ -140,7 +140,7 @@ fn main() -> ! {
         |name: &str,
          one_band: bool,
          glyphs: u64,
-         draw: &mut dyn FnMut(&mut Canvas<'_, '_, 3>) -> Result<(), DrawError>| {
+         draw: &mut dyn FnMut(&mut Canvas<'_, '_, 3, Rgb565>) -> Result<(), DrawError>| {
             let mut good = false;
             let r = if one_band { &mut whole } else { &mut banded };
             let ticks = counter.measure(|| {
