@@ -31,6 +31,7 @@ use core::ops::Range;
 use crate::band::{BandBuffer, ComposeOp, Coverage, Paint};
 use crate::edge::{AliasedWalk, AreaMode, EdgeWalk};
 use crate::geom::{FinePoint, SubPoint, FINE_BITS};
+use crate::path::SegmentSink;
 use crate::pixel_model::{walk_bed_of_nails, walk_circular, walk_hex19, walk_hex7, CircularFilter};
 use crate::raster::{DrawError, PixelModel, RenderStyle};
 use crate::shade::Plane;
@@ -81,6 +82,15 @@ pub trait Outline {
     fn bounds(&self) -> Option<FineRect>;
     /// Calls `f` with every directed segment of the closed contours.
     fn segments<F: FnMut(FinePoint, FinePoint)>(&self, f: F);
+
+    /// The segments into `sink`, which may name the rows it needs
+    /// ([`SegmentSink::window`]): segments wholly outside them may be left
+    /// out and counted ([`SegmentSink::skipped`]), so that the ones sent
+    /// keep their places in [`segments`](Self::segments)' order. The
+    /// default sends every segment.
+    fn segments_into<K: SegmentSink>(&self, sink: &mut K) {
+        self.segments(|a, b| sink.segment(a, b));
+    }
 }
 
 /// A closed polygon given by its vertices (the last joins the first).
@@ -680,10 +690,14 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         let style = self.style;
         let buf = &mut *self.buf;
         let mut cache = self.cache.as_mut();
-        let mut index = first;
-        outline.segments(|p0, p1| {
-            let k = index;
-            index = index.wrapping_add(1);
+        // The rows the band needs, widened by the margin, in fine units.
+        let window = (
+            (rows.start - margin).saturating_mul(1 << FINE_BITS),
+            (rows.end + margin)
+                .saturating_mul(1 << FINE_BITS)
+                .saturating_sub(1),
+        );
+        let mut edges = Numbered::new(first, window, |k, p0: FinePoint, p1: FinePoint| {
             let (ylo, yhi) = (p0.y.min(p1.y) >> FINE_BITS, p0.y.max(p1.y) >> FINE_BITS);
             if yhi + margin < rows.start || ylo - margin >= rows.end {
                 return;
@@ -730,8 +744,42 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
                 WalkKind::Sampled => sampled_edge(buf, p0, p1, &style, rows.clone()),
             }
         });
+        outline.segments_into(&mut edges);
         buf.compose(rows.start, rows.end, coverage, paint, op);
         Ok(())
+    }
+}
+
+/// An outline's segments numbered in their order, the ones a curve left
+/// out counted too (a band's cached walks are found by their number), for
+/// the rows `window` (fine units, closed).
+struct Numbered<F> {
+    next: u32,
+    window: (i32, i32),
+    f: F,
+}
+
+impl<F: FnMut(u32, FinePoint, FinePoint)> Numbered<F> {
+    fn new(first: u32, window: (i32, i32), f: F) -> Self {
+        Self {
+            next: first,
+            window,
+            f,
+        }
+    }
+}
+
+impl<F: FnMut(u32, FinePoint, FinePoint)> SegmentSink for Numbered<F> {
+    fn segment(&mut self, from: FinePoint, to: FinePoint) {
+        let k = self.next;
+        self.next = k.wrapping_add(1);
+        (self.f)(k, from, to);
+    }
+    fn window(&self) -> Option<(i32, i32)> {
+        Some(self.window)
+    }
+    fn skipped(&mut self, n: u32) {
+        self.next = self.next.wrapping_add(n);
     }
 }
 

@@ -5,7 +5,12 @@
 //! stored: a path of any size works, at the cost of describing it per
 //! band); its bounds, for rejecting the bands it misses, come from its
 //! control points, which hold every curve (a Bézier lies in the hull of
-//! its control polygon), widened by a stroke's reach.
+//! its control polygon), widened by a stroke's reach. Inside a band the
+//! canvas names its rows ([`SegmentSink::window`]), so the curves of
+//! circles, ellipses, arcs, sectors and rounded corners compute only the
+//! ends of the pieces of 8 vertices that miss them; the segments left out
+//! are counted ([`SegmentSink::skipped`]), so every segment keeps its
+//! number, by which the walk cache finds it in the next band.
 
 use super::{FineRect, Outline};
 use crate::geom::{FinePoint, PathSink, FINE_LIMIT};
@@ -79,6 +84,9 @@ impl<S: Shape + ?Sized> Outline for Filled<'_, S> {
     fn segments<F: FnMut(FinePoint, FinePoint)>(&self, f: F) {
         self.shape.fill_with(self.tol, &mut Segments(f));
     }
+    fn segments_into<K: SegmentSink>(&self, sink: &mut K) {
+        self.shape.fill_with(self.tol, sink);
+    }
 }
 
 /// A shape's stroke.
@@ -119,10 +127,10 @@ impl<S: Shape + ?Sized> Outline for Stroked<'_, '_, S> {
         self.bounds
     }
     fn segments<F: FnMut(FinePoint, FinePoint)>(&self, f: F) {
-        if let Err(e) = self
-            .shape
-            .stroke_with(self.style, self.tol, &mut Segments(f))
-        {
+        self.segments_into(&mut Segments(f));
+    }
+    fn segments_into<K: SegmentSink>(&self, sink: &mut K) {
+        if let Err(e) = self.shape.stroke_with(self.style, self.tol, sink) {
             if self.error.get().is_none() {
                 self.error.set(Some(e));
             }

@@ -67,6 +67,7 @@
 
 use crate::geom::PathSink;
 
+use super::segment::Vertices;
 use super::trig::{cos_sin, round_shift, sinc_q31, Q30, TURN};
 use super::vector::{div_round_i64, Pt, Unit, UNIT_X};
 use super::Tolerance;
@@ -216,26 +217,59 @@ pub(crate) fn arc_count(r: i64, sweep: i64, tol: Tolerance) -> u32 {
 
 /// The area-preserving factor `g` (Q30) of the inner vertices of an arc
 /// of `m >= 2` steps of `step` binary units each (`0 < step <= 2^29`).
+///
+/// Every band computes it again for each arc it draws, so it is written
+/// in 64-bit pieces (a 128-bit division and square root are library
+/// routines of thousands of instructions on a Cortex-M0), with the bits of
+/// the plain 128-bit form (kept in the tests): with `s = sinc` in Q31
+/// (`0.9 2^31 < s <= 2^31` for a step up to `pi/4`) and `m <= 2^11`,
+///
+/// - `q = floor(m 2^61 / s) < 2^42` as two long-division steps of 32 bits;
+/// - `root = floor(sqrt(2^30 E))`, `E = 2^30 + (m - 2) q < 2^53`: from
+///   `r0 = floor(sqrt(2^10 E))` (a 64-bit root), `root = 2^10 r0 + k`
+///   with the largest `k < 2^10` whose square fits, found bit by bit on the
+///   remainder `2^20 (2^10 E - r0^2)`;
+/// - `g = floor(2^30 q / (2^30 + root))` as two long-division steps.
 pub(crate) fn arc_scale(m: u32, step: i64) -> i64 {
-    let m = u128::from(m.max(2));
-    let s = sinc_q31(step.unsigned_abs().min(1 << 29) as i64).max(1) as u128;
-    // q = m / sinc in Q30; m <= 2048 so q < 2^42.
-    let q = (m << 61) / s;
-    let d = (1u128 << 60) + (m - 2) * q * (1 << 30); // < 2^84
-    let root = d.isqrt(); // Q30
-    ((q << 30) / ((1 << 30) + root)) as i64
+    let m = u64::from(m.clamp(2, MAX_ARC_SEGMENTS));
+    let s = (sinc_q31(step.unsigned_abs().min(1 << 29) as i64).max(1) as u64).min(1 << 31);
+    // q = floor(m 2^29 2^32 / s): m 2^29 < 2^41, the remainder below s.
+    let hi = m << 29;
+    let q = ((hi / s) << 32) + (((hi % s) << 32) / s);
+    let e = (1u64 << 30) + (m - 2) * q;
+    let r0 = (e << 10).isqrt();
+    // (2^10 r0 + k)^2 <= 2^30 E  <=>  2^11 r0 k + k^2 <= 2^20 (2^10 E - r0^2).
+    let room = ((e << 10) - r0 * r0) << 20;
+    let mut k = 0u64;
+    let mut bit = 1u64 << 9;
+    while bit > 0 {
+        let t = k + bit;
+        if (r0 << 11) * t + t * t <= room {
+            k = t;
+        }
+        bit >>= 1;
+    }
+    let root = (r0 << 10) + k;
+    let den = (1u64 << 30) + root;
+    // 2^30 q = 2^21 q 2^9: 2^21 q < 2^63.
+    let num = q << 21;
+    (((num / den) << 9) + (((num % den) << 9) / den)) as i64
 }
 
 /// `div_round_i64(step k, d)` for `k = 0, 1, 2, ...` (`d > 0`), by
 /// additions and compares: the numerator `|step| k + d/2` is carried as a
 /// quotient and a remainder, so the vertices of a curve cost no division
-/// each (two per curve).
+/// each (two per curve, and one for [`skip`](Self::skip)'s constants).
+#[derive(Clone)]
 struct RoundedMultiples {
     q: i64,
     r: i64,
     dq: i64,
     dr: i64,
     d: i64,
+    /// `PIECE - 1` steps at once: `(PIECE - 1) |step|` as `sq d + sr`.
+    sq: i64,
+    sr: i64,
     negative: bool,
 }
 
@@ -243,12 +277,23 @@ impl RoundedMultiples {
     fn new(step: i64, d: i64) -> Self {
         let d = d.max(1);
         let a = step.abs();
+        let (dq, dr) = (a / d, a % d);
+        // (PIECE - 1) dr < 7 d: a short division for the counts curves
+        // have (d <= 2048).
+        let k = i64::from(PIECE - 1);
+        let kr = k * dr;
+        let (cq, cr) = match (u32::try_from(kr), u32::try_from(d)) {
+            (Ok(n), Ok(dd)) => (i64::from(n / dd), i64::from(n % dd)),
+            _ => (kr / d, kr % d),
+        };
         Self {
             q: 0,
             r: d / 2,
-            dq: a / d,
-            dr: a % d,
+            dq,
+            dr,
             d,
+            sq: k * dq + cq,
+            sr: cr,
             negative: step < 0,
         }
     }
@@ -264,25 +309,136 @@ impl RoundedMultiples {
         }
         v
     }
+
+    /// Moves on as `PIECE - 1` calls of [`next`](Self::next) would: the
+    /// remainder grows by `(PIECE - 1) dr = cq d + sr`, so the quotient by
+    /// `(PIECE - 1) dq + cq` and one more when `r + sr` passes `d`
+    /// (`r, sr < d`).
+    fn skip(&mut self) {
+        self.q += self.sq;
+        self.r += self.sr;
+        if self.r >= self.d {
+            self.r -= self.d;
+            self.q += 1;
+        }
+    }
+}
+
+/// Vertices per piece that a curve skips as a whole when the piece misses
+/// the sink's window: only the ends of such a piece are computed (its
+/// other vertices cost a few additions each, for their parameters).
+const PIECE: u32 = 8;
+
+/// How far (fine units) a vertex between two computed vertices `j` and
+/// `j + PIECE` of a curve polygon may lie outside their y-range, for
+/// vertices `span` binary units of parameter apart on the ellipse `frame`;
+/// `None` when pieces that long are not skipped (more than a quarter turn:
+/// small polygons, drawn whole).
+///
+/// An ellipse is the image of the unit circle under a map that stretches
+/// distances by at most its major semi-axis `a`; an arc of angle `D`
+/// (radians, `D <= pi/2`) of the unit circle lies within its sagitta
+/// `1 - cos(D/2) <= D^2/8` of its chord, and projects onto the chord
+/// itself, so the curve between the two vertices' curve points lies within
+/// `a D^2 / 8` of their y-range. Each vertex is its curve point scaled
+/// radially by `f` or `g` (at most `1 / sinc(d) <= 1 + d^2/5` for a step
+/// `d <= pi/4`, so `a D^2 / 320` away) and rounded (under 2 fine units
+/// with the Q30 products' floors). The slack `a D^2 pi^2 / 2^64 + 16`
+/// (`D` in binary units, `pi^2 < 10`) is `a D_rad^2 / 4 + 16`, above
+/// their sum.
+fn piece_slack(frame: &EllipseFrame, span: i64) -> Option<i32> {
+    let span = span.unsigned_abs();
+    if span > (TURN / 4) as u64 {
+        return None;
+    }
+    // (span >> 16) + 1 <= 2^14 + 1; its square times 10 a (a <= 2^23):
+    // below 2^55.
+    let d = (span >> 16) + 1;
+    let a = frame.major().clamp(0, i64::from(MAX_RADIUS)) as u64;
+    Some(((d * d * 10 * a) >> 32) as i32 + 16)
+}
+
+/// Sends vertices `1..=n` of a curve polygon whose vertex 0, `p0`, the
+/// caller has sent: vertex `i` is `point(i, ts.next())`. With a window
+/// from `out` and a `slack` ([`piece_slack`]), in pieces of [`PIECE`]
+/// vertices: a piece whose end vertices' y-range, widened by the slack,
+/// misses the window is jumped over (its segments all lie outside it), so
+/// its inner vertices are not computed. The vertices sent are the same
+/// bits either way.
+fn send_vertices<O: Vertices + ?Sized>(
+    out: &mut O,
+    p0: Pt,
+    n: u32,
+    mut ts: RoundedMultiples,
+    slack: Option<i32>,
+    point: impl Fn(u32, i64) -> Pt,
+) {
+    let (Some((lo, hi)), Some(slack)) = (out.window(), slack) else {
+        for i in 1..=n {
+            out.vertex(point(i, ts.next()));
+        }
+        return;
+    };
+    let (lo, hi, slack) = (i64::from(lo), i64::from(hi), i64::from(slack));
+    let mut prev = p0;
+    let mut i = 0;
+    while i < n {
+        let j = (i + PIECE).min(n);
+        let from = ts.clone();
+        if j - i == PIECE {
+            ts.skip();
+        } else {
+            for _ in i + 1..j {
+                ts.next();
+            }
+        }
+        let pj = point(j, ts.next());
+        let (ylo, yhi) = (prev.y.min(pj.y) - slack, prev.y.max(pj.y) + slack);
+        if yhi < lo || ylo > hi {
+            out.jump(pj, j - i);
+        } else {
+            let mut t = from;
+            for k in i + 1..j {
+                out.vertex(point(k, t.next()));
+            }
+            out.vertex(pj);
+        }
+        prev = pj;
+        i = j;
+    }
 }
 
 /// Calls `out` with the `m + 1` vertices of the area-preserving polygon of
 /// an arc from `t0` over `sweep` (binary units, `|sweep| <=` one turn),
-/// both ends on the curve; only the start for a zero sweep.
-pub(crate) fn arc_points(
+/// both ends on the curve; only the start for a zero sweep. Pieces that
+/// miss `out`'s window are jumped over ([`Vertices::jump`]).
+pub(crate) fn arc_points<O: Vertices + ?Sized>(
     frame: &EllipseFrame,
     t0: i64,
     sweep: i64,
     tol: Tolerance,
-    mut out: impl FnMut(Pt),
+    out: &mut O,
 ) {
     let sweep = sweep.clamp(-TURN, TURN);
-    out(frame.point(t0, Q30));
+    let p0 = frame.point(t0, Q30);
+    out.vertex(p0);
     if sweep == 0 {
         return;
     }
-    arc_inner_points(frame, t0, sweep, tol, &mut out);
-    out(frame.point(t0 + sweep, Q30));
+    let m = arc_count(frame.major(), sweep, tol);
+    let mut ts = RoundedMultiples::new(sweep, i64::from(m));
+    ts.next();
+    if m < 2 {
+        out.vertex(frame.point(t0 + sweep, Q30));
+        return;
+    }
+    let g = arc_scale(m, sweep / i64::from(m));
+    let slack = piece_slack(frame, sweep / i64::from(m) * i64::from(PIECE));
+    // The inner vertices scaled by g, the last one (`ts` gives exactly
+    // `sweep` at m) on the curve.
+    send_vertices(out, p0, m, ts, slack, |i, t| {
+        frame.point(t0 + t, if i == m { Q30 } else { g })
+    });
 }
 
 /// The `m - 1` inner vertices of [`arc_points`]' polygon (none for a
@@ -309,21 +465,23 @@ pub(crate) fn arc_inner_points(
 
 /// Calls `out` with the `n` vertices of the area-preserving polygon of the
 /// full ellipse, starting at parameter `t0`, clockwise on screen.
-/// With `reverse`, counter-clockwise (for holes).
-pub(crate) fn ellipse_points(
+/// With `reverse`, counter-clockwise (for holes). Pieces that miss `out`'s
+/// window are jumped over ([`Vertices::jump`]).
+pub(crate) fn ellipse_points<O: Vertices + ?Sized>(
     frame: &EllipseFrame,
     t0: i64,
     reverse: bool,
     tol: Tolerance,
-    mut out: impl FnMut(Pt),
+    out: &mut O,
 ) {
     let n = full_count(frame.major(), tol);
     let f = full_scale(n);
     let turn = if reverse { -TURN } else { TURN };
-    let mut t = RoundedMultiples::new(turn, i64::from(n));
-    for _ in 0..n {
-        out(frame.point(t0 + t.next(), f));
-    }
+    let mut ts = RoundedMultiples::new(turn, i64::from(n));
+    let p0 = frame.point(t0 + ts.next(), f);
+    out.vertex(p0);
+    let slack = piece_slack(frame, turn / i64::from(n) * i64::from(PIECE));
+    send_vertices(out, p0, n - 1, ts, slack, |_, t| frame.point(t0 + t, f));
 }
 
 /// Describes an elliptic arc into a path as cubic Béziers (within 1/4 fine
@@ -444,6 +602,7 @@ fn unit_at(t: i64) -> (i64, i64) {
 
 #[cfg(test)]
 mod tests {
+    extern crate std;
 
     #[test]
     fn scale_q30_is_the_64_bit_floor() {
@@ -472,6 +631,43 @@ mod tests {
         }
     }
 
+    /// [`arc_scale`] as first written, in 128 bits.
+    fn arc_scale_u128(m: u32, step: i64) -> i64 {
+        let m = u128::from(m.max(2));
+        let s = sinc_q31(step.unsigned_abs().min(1 << 29) as i64).max(1) as u128;
+        let q = (m << 61) / s;
+        let d = (1u128 << 60) + (m - 2) * q * (1 << 30);
+        let root = d.isqrt();
+        ((q << 30) / ((1 << 30) + root)) as i64
+    }
+
+    #[test]
+    fn arc_scale_in_64_bits_is_the_128_bit_form() {
+        let mut seed = 0x51ed_270b_6f2a_93c5u64;
+        for m in 2..=MAX_ARC_SEGMENTS {
+            // The steps arcs give (a sweep up to a turn in m steps of at
+            // most an eighth), and random ones.
+            for k in 0..12 {
+                seed = seed
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                let step = match k {
+                    0 => 1 << 29,
+                    1 => 1,
+                    2 => (TURN / i64::from(m)).min(1 << 29),
+                    3 => (TURN / 4 / i64::from(m)).max(1),
+                    _ => 1 + (seed >> 35) as i64 % (1 << 29),
+                };
+                assert_eq!(
+                    arc_scale(m, step),
+                    arc_scale_u128(m, step),
+                    "m {m} step {step}"
+                );
+                assert_eq!(arc_scale(m, -step), arc_scale_u128(m, -step));
+            }
+        }
+    }
+
     #[test]
     fn rounded_multiples_are_the_rounded_quotients() {
         let mut seed = 0x2545_f491_4f6c_dd1du64;
@@ -493,6 +689,19 @@ mod tests {
                     "step {step} d {d} k {k}"
                 );
             }
+            // Skipping a piece's inner steps lands where stepping does.
+            let mut m = RoundedMultiples::new(step, d);
+            let mut k = 0;
+            while k + i64::from(PIECE) <= d {
+                assert_eq!(m.next(), div_round_i64(step * k, d));
+                m.skip();
+                k += i64::from(PIECE);
+            }
+            assert_eq!(
+                m.next(),
+                div_round_i64(step * k, d),
+                "step {step} d {d} k {k}"
+            );
         }
     }
     use super::*;
@@ -537,7 +746,7 @@ mod tests {
         let f = EllipseFrame::circle(Pt::new(0, 0), 10240);
         let mut pts = [Pt::default(); 64];
         let mut n = 0;
-        arc_points(&f, 0, TURN / 4, Tolerance::DEFAULT, |p| {
+        arc_points(&f, 0, TURN / 4, Tolerance::DEFAULT, &mut |p| {
             if let Some(s) = pts.get_mut(n) {
                 *s = p;
             }
@@ -545,6 +754,117 @@ mod tests {
         });
         assert_eq!(pts[0], Pt::new(10240, 0));
         assert_eq!(pts[n - 1], Pt::new(0, 10240));
+    }
+
+    /// Records a contour's segments, numbered, the way a band's canvas
+    /// numbers them (jumped segments counted), for a window or none.
+    struct Numbering {
+        window: Option<(i32, i32)>,
+        next: u32,
+        last: Option<Pt>,
+        segs: std::vec::Vec<(u32, Pt, Pt)>,
+    }
+
+    impl Numbering {
+        fn new(window: Option<(i32, i32)>) -> Self {
+            Self {
+                window,
+                next: 0,
+                last: None,
+                segs: std::vec::Vec::new(),
+            }
+        }
+
+        /// The segments that meet `(lo, hi)`, with their numbers.
+        fn meeting(&self, (lo, hi): (i32, i32)) -> std::vec::Vec<(u32, Pt, Pt)> {
+            let (lo, hi) = (i64::from(lo), i64::from(hi));
+            self.segs
+                .iter()
+                .copied()
+                .filter(|(_, a, b)| a.y.max(b.y) >= lo && a.y.min(b.y) <= hi)
+                .collect()
+        }
+    }
+
+    impl Vertices for Numbering {
+        fn vertex(&mut self, p: Pt) {
+            if let Some(l) = self.last {
+                self.segs.push((self.next, l, p));
+                self.next += 1;
+            }
+            self.last = Some(p);
+        }
+        fn window(&self) -> Option<(i32, i32)> {
+            self.window
+        }
+        fn jump(&mut self, p: Pt, n: u32) {
+            assert!(self.last.is_some(), "a jump never starts a contour");
+            self.next += n;
+            self.last = Some(p);
+        }
+    }
+
+    #[test]
+    fn pieces_outside_the_window_leave_out_only_segments_outside_it() {
+        // Random ellipses, circles, arcs and windows of 1 to 40 rows near
+        // them: the segments that meet the window, and their numbers, are
+        // those of the polygon computed whole; so is the count.
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = |m: u64| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 33) % m
+        };
+        let mut jumped = 0;
+        for case in 0..3000 {
+            let r = 256 + next(300 * 1024) as i64;
+            let b = if case % 3 == 0 {
+                r
+            } else {
+                256 + next(r as u64) as i64
+            };
+            let c = Pt::new(next(400 * 1024) as i64, next(400 * 1024) as i64);
+            let angle = if case % 2 == 0 {
+                0
+            } else {
+                next(1 << 32) as u32
+            };
+            let frame = EllipseFrame::new(c, r as u32, b as u32, Unit::from_angle(angle));
+            let tol = Tolerance::new(1 + next(12) as u16);
+            // Windows anywhere near the shape, or (every other case) a
+            // thin one at its top or bottom, where a piece's middle
+            // bulges past its ends.
+            let th = f64::from(angle) / TURN as f64 * 2.0 * core::f64::consts::PI;
+            let half = ((r as f64 * th.sin()).powi(2) + (b as f64 * th.cos()).powi(2)).sqrt();
+            let (y0, rows) = if case % 2 == 1 {
+                let edge = if next(2) == 0 { -half } else { half };
+                let y = c.y + edge as i64 - 96 + next(192) as i64;
+                (y - next(2) as i64 * 1023, 1)
+            } else {
+                (
+                    c.y - r - 2048 + next(2 * r as u64 + 4096) as i64,
+                    1 + next(40) as i64,
+                )
+            };
+            let w = (y0 as i32, (y0 + rows * 1024 - 1) as i32);
+            let t0 = next(1 << 32) as i64 - (1 << 31);
+            let sweep = next(2 * TURN as u64 + 1) as i64 - TURN;
+            let reverse = case % 5 == 0;
+            let (mut whole, mut culled) = (Numbering::new(None), Numbering::new(Some(w)));
+            if case % 4 == 0 {
+                ellipse_points(&frame, t0, reverse, tol, &mut whole);
+                ellipse_points(&frame, t0, reverse, tol, &mut culled);
+            } else {
+                arc_points(&frame, t0, sweep, tol, &mut whole);
+                arc_points(&frame, t0, sweep, tol, &mut culled);
+            }
+            assert_eq!(whole.next, culled.next, "case {case}: the numbering");
+            assert_eq!(whole.meeting(w), culled.meeting(w), "case {case}");
+            jumped += whole.segs.len() - culled.segs.len();
+        }
+        // The test exercised the jumps.
+        assert!(jumped > 100_000, "{jumped}");
     }
 
     #[test]

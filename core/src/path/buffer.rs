@@ -147,7 +147,23 @@ impl<S: SegmentSink + ?Sized> SegmentSink for BandFilter<'_, S> {
         };
         if lo != hi && hi > self.y0 && lo < self.y1 {
             self.sink.segment(from, to);
+        } else {
+            self.sink.skipped(1);
         }
+    }
+
+    /// The rows kept, within the sink's own: a segment that ends at or
+    /// above `y0`, or starts at or below `y1`, is dropped anyway.
+    fn window(&self) -> Option<(i32, i32)> {
+        let (lo, hi) = (self.y0.saturating_add(1), self.y1.saturating_sub(1));
+        Some(match self.sink.window() {
+            Some((a, b)) => (lo.max(a), hi.min(b)),
+            None => (lo, hi),
+        })
+    }
+
+    fn skipped(&mut self, n: u32) {
+        self.sink.skipped(n);
     }
 }
 

@@ -62,11 +62,35 @@ use super::vector::Pt;
 pub trait SegmentSink {
     /// A directed segment from `from` to `to`.
     fn segment(&mut self, from: FinePoint, to: FinePoint);
+
+    /// The rows this sink needs, as a closed range of y in fine units:
+    /// a segment whose y-extent lies wholly above or below it may be left
+    /// out (reported to [`skipped`](Self::skipped) instead). A band's
+    /// canvas gives its rows, so curves skip the vertices of pieces that
+    /// miss the band. `None` (the default): every segment.
+    fn window(&self) -> Option<(i32, i32)> {
+        None
+    }
+
+    /// `n` segments were left out: each lies wholly outside the
+    /// [`window`](Self::window), or had zero length. For sinks that number
+    /// their segments (a band's walks are cached by their place in the
+    /// outline): the numbering stays the same whichever segments are left
+    /// out. The default ignores it.
+    fn skipped(&mut self, n: u32) {
+        let _ = n;
+    }
 }
 
 impl<S: SegmentSink + ?Sized> SegmentSink for &mut S {
     fn segment(&mut self, from: FinePoint, to: FinePoint) {
         (**self).segment(from, to);
+    }
+    fn window(&self) -> Option<(i32, i32)> {
+        (**self).window()
+    }
+    fn skipped(&mut self, n: u32) {
+        (**self).skipped(n);
     }
 }
 
@@ -77,6 +101,7 @@ const L: i64 = FINE_LIMIT as i64;
 /// the module doc); zero-length pieces are dropped.
 pub(crate) fn emit<S: SegmentSink + ?Sized>(sink: &mut S, a: Pt, b: Pt) {
     if a == b {
+        sink.skipped(1);
         return;
     }
     let inside = |p: Pt| p.x.abs() <= L && p.y.abs() <= L;
@@ -198,6 +223,91 @@ impl<'s, S: SegmentSink + ?Sized> Contour<'s, S> {
     /// The last point.
     pub fn last(&self) -> Pt {
         self.last
+    }
+
+    /// Moves on to `p` without sending the `n` segments from the last
+    /// point to it, which the caller knows to lie wholly outside the
+    /// sink's window (see [`Vertices::jump`]); the sink is told they were
+    /// left out.
+    pub fn jump(&mut self, p: Pt, n: u32) {
+        if !self.open {
+            self.first = self.last;
+            self.open = true;
+        }
+        self.sink.skipped(n);
+        self.last = p;
+    }
+}
+
+/// The vertices of one contour, in order: what the curve flatteners
+/// ([`arc`](super::arc)) write, into a closure or into a [`Contour`]
+/// ([`ContourVertices`]).
+pub(crate) trait Vertices {
+    /// The next vertex.
+    fn vertex(&mut self, p: Pt);
+
+    /// The rows that matter (see [`SegmentSink::window`]); `None`: every
+    /// vertex is wanted.
+    fn window(&self) -> Option<(i32, i32)> {
+        None
+    }
+
+    /// The next vertex is `p`, `n` segments on from the last: the `n - 1`
+    /// vertices between are left out, so the caller must know that every
+    /// segment from the last vertex to `p` lies wholly outside the window.
+    fn jump(&mut self, p: Pt, n: u32) {
+        let _ = n;
+        self.vertex(p);
+    }
+}
+
+impl<F: FnMut(Pt) + ?Sized> Vertices for F {
+    fn vertex(&mut self, p: Pt) {
+        self(p);
+    }
+}
+
+/// A closed [`Contour`] fed vertex by vertex: the first vertex starts it,
+/// [`close`](Self::close) joins the last to it. Curves written into it
+/// may leave out the vertices of pieces outside the sink's window.
+pub(crate) struct ContourVertices<'s, S: SegmentSink + ?Sized> {
+    contour: Contour<'s, S>,
+    started: bool,
+}
+
+impl<'s, S: SegmentSink + ?Sized> ContourVertices<'s, S> {
+    pub fn new(sink: &'s mut S) -> Self {
+        Self {
+            contour: Contour::new(sink),
+            started: false,
+        }
+    }
+
+    pub fn close(mut self) {
+        self.contour.close();
+    }
+}
+
+impl<S: SegmentSink + ?Sized> Vertices for ContourVertices<'_, S> {
+    fn vertex(&mut self, p: Pt) {
+        if self.started {
+            self.contour.line_to(p);
+        } else {
+            self.contour.move_to(p);
+            self.started = true;
+        }
+    }
+
+    fn window(&self) -> Option<(i32, i32)> {
+        self.contour.sink.window()
+    }
+
+    fn jump(&mut self, p: Pt, n: u32) {
+        if self.started {
+            self.contour.jump(p, n);
+        } else {
+            self.vertex(p);
+        }
     }
 }
 

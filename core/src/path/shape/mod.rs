@@ -48,7 +48,7 @@ pub use sector::{Arc, Sector};
 use crate::geom::PathSink;
 
 use super::arc::{ellipse_points, EllipseFrame};
-use super::segment::{Contour, SegmentSink};
+use super::segment::{ContourVertices, SegmentSink, Vertices};
 use super::{Degrees, Flattener, StrokeError, StrokeStyle, Stroker, Tolerance};
 
 /// A shape that can describe its outline, fill itself and stroke itself.
@@ -120,21 +120,11 @@ fn needs_stroker(style: &StrokeStyle<'_>) -> bool {
     style.dash.is_some_and(|d| !d.is_solid())
 }
 
-/// Sends points as one closed contour.
-fn polygon<S: SegmentSink + ?Sized>(
-    sink: &mut S,
-    mut points: impl FnMut(&mut dyn FnMut(super::vector::Pt)),
-) {
-    let mut c = Contour::new(sink);
-    let mut first = true;
-    points(&mut |p| {
-        if first {
-            c.move_to(p);
-            first = false;
-        } else {
-            c.line_to(p);
-        }
-    });
+/// Sends points as one closed contour (curves in it may leave out what
+/// misses the sink's window, see [`Vertices`]).
+fn polygon<S: SegmentSink + ?Sized>(sink: &mut S, mut points: impl FnMut(&mut dyn Vertices)) {
+    let mut c = ContourVertices::new(sink);
+    points(&mut c);
     c.close();
 }
 

@@ -3,7 +3,7 @@
 
 use crate::geom::{FinePoint, PathSink};
 use crate::path::arc::{arc_cubics, arc_points, EllipseFrame};
-use crate::path::segment::SegmentSink;
+use crate::path::segment::{SegmentSink, Vertices};
 use crate::path::stroke::LineJoin;
 use crate::path::trig::{round_shift, QUARTER_TURN};
 use crate::path::vector::{Pt, UNIT_X};
@@ -239,7 +239,7 @@ struct Outline {
 impl Outline {
     /// Calls `out` with the area-preserving polygon, clockwise from the
     /// top-left corner, or counter-clockwise with `reverse`.
-    fn points(&self, reverse: bool, tol: Tolerance, out: &mut dyn FnMut(Pt)) {
+    fn points(&self, reverse: bool, tol: Tolerance, out: &mut dyn Vertices) {
         let order: [usize; 4] = if reverse { [0, 3, 2, 1] } else { [0, 1, 2, 3] };
         for k in order {
             self.corner(k, reverse, tol, out);
@@ -248,7 +248,7 @@ impl Outline {
 
     /// Corner `k` (0 top left, clockwise): its centre and the direction
     /// signs of its two sides, and the angle where its arc starts.
-    fn corner(&self, k: usize, reverse: bool, tol: Tolerance, out: &mut dyn FnMut(Pt)) {
+    fn corner(&self, k: usize, reverse: bool, tol: Tolerance, out: &mut dyn Vertices) {
         let (cx, cy, sx, sy) = match k {
             0 => (self.x0, self.y0, 1, 1),
             1 => (self.x1, self.y0, -1, 1),
@@ -285,14 +285,14 @@ impl Outline {
                     _ => grid(cx, cy + sy * d),
                 };
                 if reverse {
-                    out(on_next);
-                    out(on_prev);
+                    out.vertex(on_next);
+                    out.vertex(on_prev);
                 } else {
-                    out(on_prev);
-                    out(on_next);
+                    out.vertex(on_prev);
+                    out.vertex(on_next);
                 }
             }
-            _ => out(grid(cx, cy)),
+            _ => out.vertex(grid(cx, cy)),
         }
     }
 

@@ -2,7 +2,7 @@
 
 use crate::geom::{FinePoint, PathSink};
 use crate::path::arc::{arc_cubics, arc_points, EllipseFrame};
-use crate::path::segment::SegmentSink;
+use crate::path::segment::{SegmentSink, Vertices};
 use crate::path::stroke::LineCap;
 use crate::path::trig::{atan2, round_shift, HALF_TURN, Q30, QUARTER_TURN, TURN};
 use crate::path::vector::{Pt, Unit, UNIT_X};
@@ -109,7 +109,7 @@ impl Shape for Arc {
             if ri > 0 {
                 arc_points(&inner, t0 + s, -s, tol, &mut *out);
             } else {
-                out(c);
+                out.vertex(c);
             }
         });
         Ok(())
@@ -187,7 +187,7 @@ impl Shape for Sector {
         }
         let c: Pt = self.centre.into();
         polygon(sink, |out| {
-            out(c);
+            out.vertex(c);
             arc_points(&f, t0, s, tol, &mut *out);
         });
     }
@@ -244,11 +244,11 @@ enum Part {
 }
 
 /// Sends the parts' points in order, or all reversed (for a hole).
-fn emit_parts(parts: &[Part; 8], reverse: bool, tol: Tolerance, out: &mut dyn FnMut(Pt)) {
+fn emit_parts(parts: &[Part; 8], reverse: bool, tol: Tolerance, out: &mut dyn Vertices) {
     let grid = |p: Pt| Pt::new((p.x + 128) >> 8, (p.y + 128) >> 8);
     let mut one = |part: &Part| match *part {
         Part::None => {}
-        Part::Point(p) => out(grid(p)),
+        Part::Point(p) => out.vertex(grid(p)),
         Part::Arc(c, r, t, sw) => {
             let f = EllipseFrame::with_q8(c, r, r, UNIT_X);
             if reverse {

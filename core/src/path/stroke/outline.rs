@@ -291,7 +291,7 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
                 );
                 let mut out = Contour::new(self.sink);
                 let mut first = true;
-                ellipse_points(&frame, 0, false, self.tol, |p| {
+                ellipse_points(&frame, 0, false, self.tol, &mut |p| {
                     if first {
                         out.move_to(p);
                         first = false;
