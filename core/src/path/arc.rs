@@ -358,19 +358,64 @@ fn piece_slack(frame: &EllipseFrame, span: i64) -> Option<i32> {
     Some(((d * d * 10 * a) >> 32) as i32 + 16)
 }
 
+/// A cheap estimate of a vertex's y on an unrotated ellipse, from the
+/// coarse sine: `c_y + g b sin t`, within `err` fine units of the vertex
+/// [`EllipseFrame::point`] gives for the scale `g` (its rounding and
+/// floors, under 3 fine units, plus `g b` times the coarse sine's error,
+/// `1.5e-4 < 2^-12` of `g b`, plus the estimate's own floors).
+#[derive(Debug, Clone, Copy)]
+struct YEstimate {
+    /// The parameter vertex parameters are offset by.
+    t0: i64,
+    c_q8: i64,
+    gb_q8: u32,
+    err: i64,
+}
+
+impl YEstimate {
+    /// For vertices scaled by `scale` (Q30, at most 1.12) on `frame` at
+    /// parameters `t0 + t`; `None` for a rotated frame.
+    fn new(frame: &EllipseFrame, t0: i64, scale: i64) -> Option<Self> {
+        if frame.rot != UNIT_X {
+            return None;
+        }
+        // b below 2^31 in Q8, times a scale below 1.12: below 2^32.
+        let gb_q8 = u32::try_from(scale_q30(frame.b_q8, scale)).ok()?;
+        Some(Self {
+            t0,
+            c_q8: frame.c_q8.y,
+            gb_q8,
+            err: i64::from(gb_q8 >> (8 + 12)) + 8,
+        })
+    }
+
+    /// The estimate at parameter `t0 + t` (binary units), fine units.
+    #[inline]
+    fn y(&self, t: i64) -> i64 {
+        let s = super::trig::sin_coarse_q15(self.t0.wrapping_add(t) as u32);
+        let p = (mul_wide(self.gb_q8, s.unsigned_abs()) >> 15) as i64;
+        let dy = if s < 0 { -p } else { p };
+        (self.c_q8 + dy + 128) >> 8
+    }
+}
+
 /// Sends vertices `1..=n` of a curve polygon whose vertex 0, `p0`, the
 /// caller has sent: vertex `i` is `point(i, ts.next())`. With a window
 /// from `out` and a `slack` ([`piece_slack`]), in pieces of [`PIECE`]
 /// vertices: a piece whose end vertices' y-range, widened by the slack,
 /// misses the window is jumped over (its segments all lie outside it), so
-/// its inner vertices are not computed. The vertices sent are the same
-/// bits either way.
+/// its inner vertices are not computed. With an `estimate` (unrotated
+/// ellipses) the ends of the pieces `1..n - 1` are estimated by the
+/// coarse sine instead, widened by its error, and a vertex is computed
+/// exactly only where a jump ends before a piece that is needed, and at
+/// `n`. The vertices sent are the same bits either way.
 fn send_vertices<O: Vertices + ?Sized>(
     out: &mut O,
     p0: Pt,
     n: u32,
     mut ts: RoundedMultiples,
     slack: Option<i32>,
+    estimate: Option<YEstimate>,
     point: impl Fn(u32, i64) -> Pt,
 ) {
     let (Some((lo, hi)), Some(slack)) = (out.window(), slack) else {
@@ -379,9 +424,14 @@ fn send_vertices<O: Vertices + ?Sized>(
         }
         return;
     };
-    let (lo, hi, slack) = (i64::from(lo), i64::from(hi), i64::from(slack));
-    let mut prev = p0;
-    let mut i = 0;
+    let err = estimate.map_or(0, |e| e.err);
+    // The window widened by the bulge and the estimate's error.
+    let widen = i64::from(slack) + err;
+    let (lo, hi) = (i64::from(lo) - widen, i64::from(hi) + widen);
+    // Vertex i's parameter and y (exact or estimated), and the segments
+    // jumped since the last vertex sent.
+    let (mut i, mut ti, mut yi) = (0, 0, p0.y);
+    let mut jumped = 0;
     while i < n {
         let j = (i + PIECE).min(n);
         let from = ts.clone();
@@ -392,19 +442,31 @@ fn send_vertices<O: Vertices + ?Sized>(
                 ts.next();
             }
         }
-        let pj = point(j, ts.next());
-        let (ylo, yhi) = (prev.y.min(pj.y) - slack, prev.y.max(pj.y) + slack);
-        if yhi < lo || ylo > hi {
-            out.jump(pj, j - i);
+        let tj = ts.next();
+        let (yj, pj) = match estimate {
+            Some(e) if j < n => (e.y(tj), None),
+            _ => {
+                let p = point(j, tj);
+                (p.y, Some(p))
+            }
+        };
+        if yi.max(yj) < lo || yi.min(yj) > hi {
+            jumped += j - i;
         } else {
+            if jumped > 0 {
+                out.jump(point(i, ti), jumped);
+                jumped = 0;
+            }
             let mut t = from;
             for k in i + 1..j {
                 out.vertex(point(k, t.next()));
             }
-            out.vertex(pj);
+            out.vertex(pj.unwrap_or_else(|| point(j, tj)));
         }
-        prev = pj;
-        i = j;
+        (i, ti, yi) = (j, tj, yj);
+    }
+    if jumped > 0 {
+        out.jump(point(n, ti), jumped);
     }
 }
 
@@ -436,7 +498,8 @@ pub(crate) fn arc_points<O: Vertices + ?Sized>(
     let slack = piece_slack(frame, sweep / i64::from(m) * i64::from(PIECE));
     // The inner vertices scaled by g, the last one (`ts` gives exactly
     // `sweep` at m) on the curve.
-    send_vertices(out, p0, m, ts, slack, |i, t| {
+    let estimate = YEstimate::new(frame, t0, g);
+    send_vertices(out, p0, m, ts, slack, estimate, |i, t| {
         frame.point(t0 + t, if i == m { Q30 } else { g })
     });
 }
@@ -481,7 +544,10 @@ pub(crate) fn ellipse_points<O: Vertices + ?Sized>(
     let p0 = frame.point(t0 + ts.next(), f);
     out.vertex(p0);
     let slack = piece_slack(frame, turn / i64::from(n) * i64::from(PIECE));
-    send_vertices(out, p0, n - 1, ts, slack, |_, t| frame.point(t0 + t, f));
+    let estimate = YEstimate::new(frame, t0, f);
+    send_vertices(out, p0, n - 1, ts, slack, estimate, |_, t| {
+        frame.point(t0 + t, f)
+    });
 }
 
 /// Describes an elliptic arc into a path as cubic Béziers (within 1/4 fine
@@ -802,6 +868,41 @@ mod tests {
             self.next += n;
             self.last = Some(p);
         }
+    }
+
+    #[test]
+    fn the_y_estimate_is_within_its_error_of_the_vertex() {
+        let mut seed = 0x0123_4567_89ab_cdefu64;
+        let mut next = |m: u64| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 33) % m
+        };
+        let mut worst = 0f64;
+        for case in 0..20_000 {
+            let a = (next(u64::from(MAX_RADIUS)) as u32) >> (next(16) as u32);
+            let b = (next(u64::from(MAX_RADIUS)) as u32) >> (next(16) as u32);
+            let c = Pt::new(
+                next(1 << 22) as i64 - (1 << 21),
+                next(1 << 22) as i64 - (1 << 21),
+            );
+            let frame = EllipseFrame::new(c, a, b, UNIT_X);
+            // Scales as curves use them: 1, and g or f up to 1.12.
+            let scale = Q30 + (next(Q30 as u64 / 8) as i64) * (case % 2);
+            let t0 = next(1 << 32) as i64 - (1 << 31);
+            let e = YEstimate::new(&frame, t0, scale).unwrap();
+            for _ in 0..8 {
+                let t = next(1 << 33) as i64 - (1 << 32);
+                let d = (frame.point(t0 + t, scale).y - e.y(t)).abs();
+                assert!(d <= e.err, "case {case}: {d} > {}", e.err);
+                worst = worst.max(d as f64 / e.err as f64);
+            }
+        }
+        // Rotated frames have no estimate.
+        let r = EllipseFrame::new(Pt::new(0, 0), 100, 50, Unit::from_angle(1 << 28));
+        assert!(YEstimate::new(&r, 0, Q30).is_none());
+        assert!(worst > 0.2, "the bound is not loose beyond use: {worst}");
     }
 
     #[test]

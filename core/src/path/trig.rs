@@ -4,7 +4,9 @@
 //! Takes binary angles (`2^32` units per turn, so angles wrap for free in a
 //! `u32`) and integer vectors; gives Q30 sines and cosines (`1.0 = 2^30`),
 //! binary angles, and floors of square roots. Only `i64` multiplies and
-//! shifts (and `u128` in the once-per-shape roots); no table, no float.
+//! shifts (and `u128` in the once-per-shape roots); no float. One small
+//! table, a coarse quarter-wave sine built at compile time, serves bounds
+//! that need not be exact ([`sin_coarse_q15`]); vertices use the series.
 //!
 //! ## Method
 //!
@@ -61,6 +63,64 @@ const fn atan_inv_q61(x: i64) -> i64 {
 
 /// `pi * 2^61` (below `2^63`: `pi < 4`), from Machin's formula.
 pub(crate) const PI_Q61: i64 = 16 * atan_inv_q61(5) - 4 * atan_inv_q61(239);
+
+/// Steps of [`SINE_Q15`] per quarter turn.
+const SINE_STEPS: usize = 64;
+
+/// `sin(k pi / 128)` for `k = 0..=64` (a quarter turn in 64 steps) in
+/// Q15, rounded: the coarse sine of [`sin_coarse_q15`]. Built at compile
+/// time from the Taylor series `x - x^3/3! + ...` to `x^29` in Q61
+/// (`x <= pi/2`: the first dropped term is below `1e-20`; `x^2` and every
+/// term times it stay below `2^124`).
+const SINE_Q15: [i32; SINE_STEPS + 1] = {
+    let mut t = [0i32; SINE_STEPS + 1];
+    let mut k = 0;
+    while k <= SINE_STEPS {
+        // x = k pi / 128 in Q61.
+        let x = (PI_Q61 as i128 * k as i128) >> 7;
+        let x2 = (x * x) >> 61;
+        let (mut term, mut sum, mut n) = (x, x, 1i128);
+        while n < 15 {
+            term = -((term * x2) >> 61) / ((2 * n) * (2 * n + 1));
+            sum += term;
+            n += 1;
+        }
+        // Q61 -> Q15, rounded.
+        t[k] = ((sum + (1 << 45)) >> 46) as i32;
+        k += 1;
+    }
+    t
+};
+
+/// `sin(a)` in Q15 for the binary angle `a`, coarse and cheap: the quarter
+/// wave [`SINE_Q15`] read by linear interpolation in 32-bit integers (a
+/// few additions, one short multiply). Within [`SIN_COARSE_ERR_Q15`] of
+/// the true value: the table's rounding (half a Q15 unit, `1.6e-5`), the
+/// interpolation (`h^2 / 8 = 7.6e-5` for a step `h = pi/128`), the
+/// position truncated to 10 bits of a step (`h / 2^10 = 2.4e-5`) and the
+/// product's floor (one unit, `3.1e-5`): `1.5e-4`, 5 units. For bounds
+/// where the exact [`cos_sin`] would cost too much (which pieces of a
+/// curve a band needs), never for a vertex.
+pub(crate) fn sin_coarse_q15(a: u32) -> i32 {
+    let quadrant = a >> 30;
+    let f = a & ((1 << 30) - 1);
+    // sin over the quadrants: S(f), S(q - f), -S(f), -S(q - f).
+    let f = if quadrant & 1 == 1 { (1 << 30) - f } else { f };
+    let i = (f >> 24) as usize;
+    let frac = ((f >> 14) & 1023) as i32;
+    let lo = SINE_Q15.get(i).copied().unwrap_or(1 << 15);
+    let hi = SINE_Q15.get(i + 1).copied().unwrap_or(lo);
+    // (hi - lo) < 2^10, frac < 2^10: the product fits easily.
+    let v = lo + (((hi - lo) * frac) >> 10);
+    if quadrant >= 2 {
+        -v
+    } else {
+        v
+    }
+}
+
+/// The error bound of [`sin_coarse_q15`], Q15 units.
+pub(crate) const SIN_COARSE_ERR_Q15: i32 = 5;
 
 /// `(x >> s)` rounded to nearest, halves away from zero (so negation
 /// commutes with it: mirror images round to mirror images). `s` in
@@ -278,6 +338,42 @@ pub(crate) fn ceil_sqrt_u64(v: u64) -> u64 {
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn the_coarse_sine_is_within_its_bound() {
+        extern crate std;
+        let mut worst = 0f64;
+        let mut a = 0u64;
+        while a < 1 << 32 {
+            let want = (a as f64 / (1u64 << 32) as f64 * 2.0 * core::f64::consts::PI).sin();
+            let got = f64::from(sin_coarse_q15(a as u32)) / 32768.0;
+            worst = worst.max((got - want).abs());
+            a += 4099;
+        }
+        for a in [
+            0u32,
+            1 << 30,
+            1 << 31,
+            3 << 30,
+            u32::MAX,
+            (1 << 30) - 1,
+            1 << 24,
+        ] {
+            let want = (f64::from(a) / (1u64 << 32) as f64 * 2.0 * core::f64::consts::PI).sin();
+            let got = f64::from(sin_coarse_q15(a)) / 32768.0;
+            worst = worst.max((got - want).abs());
+        }
+        assert!(
+            worst * 32768.0 <= f64::from(SIN_COARSE_ERR_Q15),
+            "{}",
+            worst * 32768.0
+        );
+        // The table is the rounded sine.
+        for (k, &v) in SINE_Q15.iter().enumerate() {
+            let want = (k as f64 * core::f64::consts::PI / 128.0).sin() * 32768.0;
+            assert!((f64::from(v) - want).abs() <= 0.5 + 1e-9, "{k}");
+        }
+    }
 
     /// The series in plain 64- and 128-bit arithmetic, as first written:
     /// the 32-bit forms must give the same bits.
