@@ -68,7 +68,7 @@
 use crate::geom::PathSink;
 
 use super::segment::Vertices;
-use super::trig::{cos_sin, round_shift, sinc_q31, Q30, TURN};
+use super::trig::{cos_sin, round_shift, sinc_q31, Q30, SIN_COARSE_ERR_Q15, TURN};
 use super::vector::{div_round_i64, Pt, Unit, UNIT_X};
 use super::Tolerance;
 use crate::arith::mul_wide;
@@ -362,7 +362,8 @@ fn piece_slack(frame: &EllipseFrame, span: i64) -> Option<i32> {
 /// coarse sine: `c_y + g b sin t`, within `err` fine units of the vertex
 /// [`EllipseFrame::point`] gives for the scale `g` (its rounding and
 /// floors, under 3 fine units, plus `g b` times the coarse sine's error,
-/// `1.5e-4 < 2^-12` of `g b`, plus the estimate's own floors).
+/// 5 Q15 units, `1.5e-4 < 2^-12` of `g b`, plus the estimate's own
+/// floors).
 #[derive(Debug, Clone, Copy)]
 struct YEstimate {
     /// The parameter vertex parameters are offset by.
@@ -385,7 +386,8 @@ impl YEstimate {
             t0,
             c_q8: frame.c_q8.y,
             gb_q8,
-            err: i64::from(gb_q8 >> (8 + 12)) + 8,
+            // g b times the sine's error (Q15, Q8 fine units), plus 8.
+            err: ((u64::from(gb_q8) * SIN_COARSE_ERR_Q15 as u64) >> (15 + 8)) as i64 + 8,
         })
     }
 
