@@ -66,6 +66,25 @@ impl<'s, S: SegmentSink + ?Sized> Flattener<'s, S> {
     }
 }
 
+impl<S: SegmentSink + ?Sized> Flattener<'_, S> {
+    /// True when a curve with control points `q` lies wholly above or
+    /// below the sink's window: a Bézier lies in the hull of its control
+    /// points, and each flattened point is a point of the curve rounded to
+    /// the grid (within a fine unit), so none of its segments meets the
+    /// window and the curve is jumped over, its segments counted.
+    fn misses_window(&self, q: &[Pt]) -> bool {
+        let Some((lo, hi)) = self.out.sink.window() else {
+            return false;
+        };
+        let (mut ylo, mut yhi) = (i64::MAX, i64::MIN);
+        for p in q {
+            ylo = ylo.min(p.y);
+            yhi = yhi.max(p.y);
+        }
+        yhi + 1 < i64::from(lo) || ylo - 1 > i64::from(hi)
+    }
+}
+
 impl<S: SegmentSink + ?Sized> Drop for Flattener<'_, S> {
     fn drop(&mut self) {
         self.out.close();
@@ -86,6 +105,10 @@ impl<S: SegmentSink + ?Sized> PathSink for Flattener<'_, S> {
     fn quad_to(&mut self, c: FinePoint, p: FinePoint) {
         let q = [self.out.last(), Pt::from(c), Pt::from(p)];
         let n = quad_count(&q, self.tol);
+        if self.misses_window(&q) {
+            self.out.jump(q[2], n);
+            return;
+        }
         for k in 1..n {
             self.out.line_to(quad_at(&q, k, n));
         }
@@ -95,6 +118,10 @@ impl<S: SegmentSink + ?Sized> PathSink for Flattener<'_, S> {
     fn cubic_to(&mut self, c1: FinePoint, c2: FinePoint, p: FinePoint) {
         let q = [self.out.last(), Pt::from(c1), Pt::from(c2), Pt::from(p)];
         let n = cubic_count(&q, self.tol);
+        if self.misses_window(&q) {
+            self.out.jump(q[3], n);
+            return;
+        }
         for k in 1..n {
             self.out.line_to(cubic_at(&q, k, n));
         }
@@ -108,6 +135,7 @@ impl<S: SegmentSink + ?Sized> PathSink for Flattener<'_, S> {
 
 #[cfg(test)]
 mod tests {
+    extern crate std;
     use super::*;
 
     #[derive(Default)]
@@ -123,6 +151,75 @@ mod tests {
             self.balance.0 += i64::from(b.x - a.x);
             self.balance.1 += i64::from(b.y - a.y);
         }
+    }
+
+    /// Numbers segments as a band's canvas does (skipped ones counted).
+    struct Numbering {
+        window: Option<(i32, i32)>,
+        next: u32,
+        segs: std::vec::Vec<(u32, FinePoint, FinePoint)>,
+    }
+
+    impl SegmentSink for Numbering {
+        fn segment(&mut self, a: FinePoint, b: FinePoint) {
+            self.segs.push((self.next, a, b));
+            self.next += 1;
+        }
+        fn window(&self) -> Option<(i32, i32)> {
+            self.window
+        }
+        fn skipped(&mut self, n: u32) {
+            self.next += n;
+        }
+    }
+
+    #[test]
+    fn curves_outside_the_window_leave_out_only_segments_outside_it() {
+        let mut seed = 0x2f6b_3a9c_11d4_e807u64;
+        let mut next = |m: i64| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((seed >> 33) % m as u64) as i64
+        };
+        let mut jumped = 0;
+        for case in 0..2000 {
+            let mut pts = [FinePoint::default(); 10];
+            for p in pts.iter_mut() {
+                *p = FinePoint::new(next(200_000) as i32, next(200_000) as i32);
+            }
+            let y0 = next(200_000) as i32;
+            let w = (y0, y0 + 1 + next(30_000) as i32);
+            let run = |window| {
+                let mut n = Numbering {
+                    window,
+                    next: 0,
+                    segs: std::vec::Vec::new(),
+                };
+                let mut f =
+                    Flattener::with_tolerance(&mut n, Tolerance::new(1 + (case % 7) as u16));
+                f.move_to(pts[0]);
+                f.quad_to(pts[1], pts[2]);
+                f.cubic_to(pts[3], pts[4], pts[5]);
+                f.line_to(pts[6]);
+                f.cubic_to(pts[7], pts[8], pts[9]);
+                f.quad_to(pts[2], pts[0]);
+                f.finish();
+                n
+            };
+            let (whole, culled) = (run(None), run(Some(w)));
+            let meets = |n: &Numbering| -> std::vec::Vec<_> {
+                n.segs
+                    .iter()
+                    .copied()
+                    .filter(|(_, a, b)| a.y.max(b.y) >= w.0 && a.y.min(b.y) <= w.1)
+                    .collect()
+            };
+            assert_eq!(whole.next, culled.next, "case {case}");
+            assert_eq!(meets(&whole), meets(&culled), "case {case}");
+            jumped += whole.segs.len() - culled.segs.len();
+        }
+        assert!(jumped > 10_000, "{jumped}");
     }
 
     #[test]

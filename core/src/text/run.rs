@@ -224,10 +224,14 @@ impl Outline for GlyphRun<'_, '_, '_> {
     }
 
     fn segments<F: FnMut(FinePoint, FinePoint)>(&self, f: F) {
-        let mut sink = ToClosure(f);
+        self.segments_into(&mut ToClosure(f));
+    }
+
+    /// Curves that miss the sink's window are counted, not flattened.
+    fn segments_into<K: SegmentSink>(&self, sink: &mut K) {
         for g in self.glyphs() {
             // Each glyph's contours closed on their own.
-            let mut fl = Flattener::with_tolerance(&mut sink, self.tol);
+            let mut fl = Flattener::with_tolerance(&mut *sink, self.tol);
             g.describe(&mut fl);
             fl.finish();
         }
