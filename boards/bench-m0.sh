@@ -130,20 +130,24 @@ END {
     slabel["eg_fill"] = "e-g aliased (`PrimitiveStyle`), framebuffer with slice `fill_solid`"
     slabel["eg_stock_fb"] = "e-g aliased (`PrimitiveStyle`), e-g `Framebuffer` (`draw_iter`)"
     # The shapes of workloads/src/render/ui.rs: a disc of radius 50; an
-    # arc stroke of radius 90, width 12, sweep 270 degrees (butt caps).
+    # arc stroke of radius 90, width 12, sweep 270 degrees, butt caps, and
+    # the same with round caps (two half discs of radius 6 more; e-g has
+    # no caps and draws its butt-ended arc again).
     pi = atan2(0, -1)
     area["circle"] = pi * 50 * 50
     area["gauge"] = 270 / 360 * pi * (96 * 96 - 84 * 84)
+    area["gauge_round"] = area["gauge"] + pi * 6 * 6
     printf "\nShapes alone on a 240x240 Rgb565 frame (issue 16), instructions; marginal = frame with the shape - frame without it (N = 0):\n\n"
     printf "| renderer | frame, no shape (N = 0) "
     printf "| circle r 50, marginal | per px (%.0f px) | circle, frame ", area["circle"]
-    printf "| gauge arc r 90 w 12 270°, marginal | per px (%.0f px) | gauge, frame |\n", area["gauge"]
-    printf "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n"
+    printf "| gauge arc r 90 w 12 270°, marginal | per px (%.0f px) | gauge, frame ", area["gauge"]
+    printf "| gauge, round caps, marginal | per px (%.0f px) | gauge, round caps, frame |\n", area["gauge_round"]
+    printf "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n"
     for (i = 1; i <= ns; i++) {
         r = sorder[i]
         printf "| %s | %s ", (r in slabel ? slabel[r] : r), group(shape[r, "none"])
-        split("circle gauge", sh, " ")
-        for (k = 1; k <= 2; k++) {
+        split("circle gauge gauge_round", sh, " ")
+        for (k = 1; k <= 3; k++) {
             m = shape[r, sh[k]] - shape[r, "none"]
             printf "| %s | %s | %s ", group(m), perpx(m / area[sh[k]]), group(shape[r, sh[k]])
         }

@@ -13,14 +13,15 @@
 //! insns_per_tick <num>/<den>
 //! workload <name> <triangles> <twice the area of all> <twice the area of triangles 2..N>
 //! insns <renderer> <workload> <triangles drawn> <band rows> <instructions>
-//! shape <renderer> <none|circle|gauge> <instructions>
+//! shape <renderer> <none|circle|gauge|gauge_round> <instructions>
 //! redraw <renderer> <full|window> <instructions> <windows> <pixels> <SPI bytes>
 //! stack_bytes <n>
 //! done
 //! ```
 //!
 //! `shape` and `redraw` lines are the frames of
-//! `softedge_workloads::render::ui` (a circle, an arc gauge, a dial scene
+//! `softedge_workloads::render::ui` (a circle, an arc gauge with butt and
+//! with round caps, a dial scene
 //! whole or in a dirty rectangle; `aa_rgb` is softedge, `eg_fill` and
 //! `eg_stock_fb` embedded-graphics); a `redraw` line's windows, pixels and
 //! bytes are what an SPI display is sent (`targets::SpiCounter`).

@@ -133,6 +133,16 @@ impl EllipseFrame {
     /// The image of the point `(x, y)` of the unit circle's plane, given in
     /// Q30 with `|x|, |y| < 1.12`.
     pub fn map_q30(&self, x: i64, y: i64) -> Pt {
+        let p = self.map_q30_q8(x, y);
+        // Halves round up (not away from zero): a shape moved by whole
+        // fine units then moves every vertex by exactly as much, so its
+        // area is the same bits wherever it lies.
+        Pt::new((p.x + 128) >> 8, (p.y + 128) >> 8)
+    }
+
+    /// [`map_q30`](Self::map_q30) before the rounding to the grid: Q8
+    /// fine units.
+    fn map_q30_q8(&self, x: i64, y: i64) -> Pt {
         let u = scale_q30(self.a_q8, x); // Q8, below 2^31.2
         let v = scale_q30(self.b_q8, y);
         // Unrotated (circles, most ellipses): `round_shift(u 2^30, 30)` is
@@ -145,11 +155,7 @@ impl EllipseFrame {
                 round_shift(u * self.rot.y + v * self.rot.x, 30),
             )
         };
-        let (px, py) = (self.c_q8.x + dx, self.c_q8.y + dy);
-        // Halves round up (not away from zero): a shape moved by whole
-        // fine units then moves every vertex by exactly as much, so its
-        // area is the same bits wherever it lies.
-        Pt::new((px + 128) >> 8, (py + 128) >> 8)
+        Pt::new(self.c_q8.x + dx, self.c_q8.y + dy)
     }
 
     /// The point at parameter `t` (binary units), radially scaled by
@@ -157,6 +163,13 @@ impl EllipseFrame {
     pub fn point(&self, t: i64, scale: i64) -> Pt {
         let (c, s) = cos_sin(t as u32);
         self.map_q30(scale_q30(scale, c), scale_q30(scale, s))
+    }
+
+    /// The point at parameter `t` on the curve, in Q8 fine units (not
+    /// rounded to the grid: the centre of another curve).
+    pub fn point_q8(&self, t: i64) -> Pt {
+        let (c, s) = cos_sin(t as u32);
+        self.map_q30_q8(c, s)
     }
 }
 
@@ -508,24 +521,31 @@ pub(crate) fn arc_points<O: Vertices + ?Sized>(
 
 /// The `m - 1` inner vertices of [`arc_points`]' polygon (none for a
 /// single chord): for callers whose arc ends are points they already
-/// have (joins and caps of strokes).
-pub(crate) fn arc_inner_points(
+/// have (joins and caps of strokes). `p0` is the point the contour stands
+/// at, the arc's start or within a few fine units of it (the slack of
+/// [`piece_slack`] has room for that); pieces that miss `out`'s window
+/// are jumped over.
+pub(crate) fn arc_inner_vertices<O: Vertices + ?Sized>(
     frame: &EllipseFrame,
     t0: i64,
     sweep: i64,
     tol: Tolerance,
-    mut out: impl FnMut(Pt),
+    p0: Pt,
+    out: &mut O,
 ) {
     let sweep = sweep.clamp(-TURN, TURN);
     let m = arc_count(frame.major(), sweep, tol);
-    if m >= 2 && sweep != 0 {
-        let g = arc_scale(m, sweep / i64::from(m));
-        let mut t = RoundedMultiples::new(sweep, i64::from(m));
-        t.next();
-        for _ in 1..m {
-            out(frame.point(t0 + t.next(), g));
-        }
+    if m < 2 || sweep == 0 {
+        return;
     }
+    let g = arc_scale(m, sweep / i64::from(m));
+    let mut ts = RoundedMultiples::new(sweep, i64::from(m));
+    ts.next();
+    let slack = piece_slack(frame, sweep / i64::from(m) * i64::from(PIECE));
+    let estimate = YEstimate::new(frame, t0, g);
+    send_vertices(out, p0, m - 1, ts, slack, estimate, |_, t| {
+        frame.point(t0 + t, g)
+    });
 }
 
 /// Calls `out` with the `n` vertices of the area-preserving polygon of the

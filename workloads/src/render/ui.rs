@@ -80,11 +80,14 @@ pub enum Shape {
     Disc,
     /// [`gauge`], stroked [`GAUGE_STROKE`] px, butt caps.
     Gauge,
+    /// [`gauge`], stroked [`GAUGE_STROKE`] px, round caps
+    /// (embedded-graphics has no caps: its arc keeps butt ends).
+    GaugeRound,
 }
 
 impl Shape {
     /// Every shape, in the order of the output.
-    pub const ALL: [Shape; 3] = [Shape::None, Shape::Disc, Shape::Gauge];
+    pub const ALL: [Shape; 4] = [Shape::None, Shape::Disc, Shape::Gauge, Shape::GaugeRound];
 
     /// The name printed in the output.
     pub fn name(self) -> &'static str {
@@ -92,6 +95,7 @@ impl Shape {
             Shape::None => "none",
             Shape::Disc => "circle",
             Shape::Gauge => "gauge",
+            Shape::GaugeRound => "gauge_round",
         }
     }
 }
@@ -107,6 +111,9 @@ pub fn softedge_shape(shape: Shape, bufs: &mut Buffers<'_>) -> Result<(), FrameE
             Shape::Disc => disc().into_styled(AaStyle::with_fill(DISC_COLOR)).draw(c),
             Shape::Gauge => gauge()
                 .into_styled(AaStyle::with_stroke(GAUGE_COLOR, GAUGE_STROKE))
+                .draw(c),
+            Shape::GaugeRound => gauge()
+                .into_styled(AaStyle::with_stroke(GAUGE_COLOR, GAUGE_STROKE).cap(LineCap::Round))
                 .draw(c),
         })
         .map_err(|_| FrameError)?;
@@ -126,7 +133,7 @@ pub fn eg_shape<D: DrawTarget<Color = Rgb565>>(shape: Shape, target: &mut D) {
         Shape::Disc => disc()
             .into_styled(PrimitiveStyle::with_fill(DISC_COLOR))
             .draw(target),
-        Shape::Gauge => gauge()
+        Shape::Gauge | Shape::GaugeRound => gauge()
             .into_styled(PrimitiveStyle::with_stroke(GAUGE_COLOR, GAUGE_STROKE))
             .draw(target),
     };

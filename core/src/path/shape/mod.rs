@@ -11,9 +11,11 @@
 //!   round parts as **area-preserving polygons** (the polygon's area is
 //!   the exact area before the grid rounding), clockwise on screen;
 //! - [`Shape::stroke`]: its stroke. Without dashes, circles, rectangles,
-//!   rounded rectangles, sectors and butt-capped arcs are stroked as the
+//!   rounded rectangles, sectors and arcs (butt caps, or centred round
+//!   and square caps where the ring has a hole) are stroked as the
 //!   ring between an outer and an inner outline of the same family (two
-//!   contours of opposite direction, or one for an arc): exact offsets
+//!   contours of opposite direction, or one for an arc, its caps in it):
+//!   exact offsets
 //!   for circles, rectangles, sectors and circular corners, and
 //!   embedded-graphics' model for elliptic corners (semi-axes plus and
 //!   minus the offset). Ellipses, dashed outlines and everything else go

@@ -1,7 +1,7 @@
 //! [`Arc`] and [`Sector`]: parts of a circle between two angles.
 
 use crate::geom::{FinePoint, PathSink};
-use crate::path::arc::{arc_cubics, arc_points, EllipseFrame};
+use crate::path::arc::{arc_cubics, arc_inner_vertices, arc_points, EllipseFrame};
 use crate::path::segment::{SegmentSink, Vertices};
 use crate::path::stroke::LineCap;
 use crate::path::trig::{atan2, round_shift, HALF_TURN, Q30, QUARTER_TURN, TURN};
@@ -28,7 +28,12 @@ fn clockwise(start: Degrees, sweep: Degrees) -> (i64, i64) {
 /// its fill closes it with the chord (SVG's rule; embedded-graphics does
 /// not fill arcs); its stroke with butt caps and no dashes is the annular
 /// sector between radii `r + o` and `r - i` (`o`, `i` the stroke's reach
-/// outside and inside the circle), as embedded-graphics draws it.
+/// outside and inside the circle), as embedded-graphics draws it. A
+/// centred stroke with round or square caps narrower than the diameter is
+/// the same ring with its caps (half discs, or squares, of half the width
+/// about the centre line's ends) in one contour, its curves computed only
+/// where a band needs them; other capped strokes go through the
+/// [`Stroker`](crate::path::Stroker).
 ///
 /// ```
 /// use softedge::geom::FinePoint;
@@ -82,32 +87,68 @@ impl Shape for Arc {
         tol: Tolerance,
         sink: &mut S,
     ) -> Result<(), StrokeError> {
-        if needs_stroker(style) || style.cap != LineCap::Butt {
+        let (t0, s) = clockwise(self.start, self.sweep);
+        let (out_q1, in_q1) = style.reach_q1();
+        let r_q8 = i64::from(self.radius) << 8;
+        // Round and square caps on the ring: a centred stroke that leaves
+        // a hole (otherwise the general stroker).
+        let capped = style.cap != LineCap::Butt;
+        let ring_caps = out_q1 == in_q1 && r_q8 > in_q1 << 7;
+        if needs_stroker(style) || (capped && !ring_caps) {
             let mut st = crate::path::Stroker::with_tolerance(style, tol, sink);
             self.describe(&mut st);
             return st.finish();
         }
-        let (t0, s) = clockwise(self.start, self.sweep);
         if self.radius == 0 || s == 0 || style.width == 0 {
             return Ok(());
         }
-        let (out_q1, in_q1) = style.reach_q1();
         let c: Pt = self.centre.into();
         let c_q8 = Pt::new(c.x << 8, c.y << 8);
-        let r_q8 = i64::from(self.radius) << 8;
         let ro = r_q8 + (out_q1 << 7);
         let ri = (r_q8 - (in_q1 << 7)).max(0);
         let outer = EllipseFrame::with_q8(c_q8, ro, ro, UNIT_X);
         let inner = EllipseFrame::with_q8(c_q8, ri, ri, UNIT_X);
         if s >= TURN {
+            // Caps of a whole turn lie inside the ring: a disc of radius
+            // h about a point at radius r stays between r - h and r + h.
             ellipse_contour(&outer, false, tol, sink);
             ellipse_contour(&inner, true, tol, sink);
             return Ok(());
         }
+        // A cap: about the centre line's end at parameter `t`, radius
+        // h = o = i, half a turn clockwise from the direction `a` (the
+        // end's outward radius at the end, its inward one at the start),
+        // from the ring's vertex `from` there.
+        let mid = EllipseFrame::with_q8(c_q8, r_q8, r_q8, UNIT_X);
+        let cap = |t: i64, a: i64, from: Pt, out: &mut dyn Vertices| {
+            let h = out_q1 << 7;
+            let end = mid.point_q8(t);
+            match style.cap {
+                LineCap::Round => {
+                    let f = EllipseFrame::with_q8(end, h, h, UNIT_X);
+                    arc_inner_vertices(&f, a, HALF_TURN, tol, from, out);
+                }
+                LineCap::Square => {
+                    // The corners, h sqrt 2 from the end at 45 degrees
+                    // either side of the tangent (h <= 2^29: 2 h^2 < 2^60).
+                    let d = (2 * h * h).isqrt();
+                    let f = EllipseFrame::with_q8(end, d, d, UNIT_X);
+                    out.vertex(f.point(a + TURN / 8, Q30));
+                    out.vertex(f.point(a + 3 * TURN / 8, Q30));
+                }
+                LineCap::Butt => {}
+            }
+        };
         polygon(sink, |out| {
             arc_points(&outer, t0, s, tol, &mut *out);
             if ri > 0 {
+                if capped {
+                    cap(t0 + s, t0 + s, outer.point(t0 + s, Q30), &mut *out);
+                }
                 arc_points(&inner, t0 + s, -s, tol, &mut *out);
+                if capped {
+                    cap(t0, t0 + HALF_TURN, inner.point(t0, Q30), &mut *out);
+                }
             } else {
                 out.vertex(c);
             }
@@ -436,5 +477,78 @@ impl SectorRing {
             );
         }
         Some(parts)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::path::testing::Tally;
+
+    /// The area of an arc's stroke with caps, exactly: the annular sector
+    /// between `r - h` and `r + h` over `s` radians and its two caps.
+    fn exact_px2(r: f64, h: f64, s: f64, cap: LineCap) -> f64 {
+        let ring = s / 2.0 * ((r + h) * (r + h) - (r - h) * (r - h));
+        ring + match cap {
+            LineCap::Round => core::f64::consts::PI * h * h,
+            LineCap::Square => 4.0 * h * h,
+            LineCap::Butt => 0.0,
+        }
+    }
+
+    #[test]
+    fn capped_arc_strokes_have_the_exact_area() {
+        let mut seed = 0x7a3c_55e1_0b9d_2f41u64;
+        let mut next = |m: u64| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 33) % m
+        };
+        for case in 0..400 {
+            let r_px = 4.0 + next(200) as f64;
+            let w_fine = 512 + next((r_px * 1.6 * 1024.0) as u64) as u32;
+            let h = f64::from(w_fine) / 2048.0;
+            // Sweeps whose caps do not meet (a gap of more than 2h plus
+            // some room on the centre line).
+            let max_deg = 360.0 - (2.0 * h / r_px + 0.05).to_degrees();
+            if max_deg < 20.0 {
+                continue;
+            }
+            let sweep = 5 + next(max_deg as u64 - 5) as i32;
+            let start = next(720) as i32 - 360;
+            let sweep = if case % 2 == 0 { sweep } else { -sweep };
+            let c = FinePoint::new(next(300 * 1024) as i32, next(300 * 1024) as i32);
+            let arc = Arc::new(
+                c,
+                (r_px * 1024.0) as u32,
+                Degrees::new(start),
+                Degrees::new(sweep),
+            );
+            for cap in [LineCap::Round, LineCap::Square] {
+                let style = StrokeStyle::new(w_fine).with_cap(cap);
+                let mut t = Tally::default();
+                arc.stroke(&style, &mut t).unwrap();
+                assert!(t.closed(), "case {case}");
+                let s = f64::from(sweep.abs()).to_radians();
+                let want = exact_px2(r_px, h, s, cap);
+                let rel = (t.px2() / want - 1.0).abs();
+                assert!(
+                    rel < 5e-4,
+                    "case {case} {cap:?}: {} vs {want} ({rel})",
+                    t.px2()
+                );
+                // The general stroker (what drew capped arcs before) agrees.
+                let mut g = Tally::default();
+                let mut st = crate::path::Stroker::new(&style, &mut g);
+                arc.describe(&mut st);
+                st.finish().unwrap();
+                assert!(
+                    (g.px2() / want - 1.0).abs() < 2e-3,
+                    "case {case}: stroker {}",
+                    g.px2()
+                );
+            }
+        }
     }
 }

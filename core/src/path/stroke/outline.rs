@@ -48,7 +48,7 @@
 //! Everything else is emitted at once, so the outline needs two pieces of
 //! memory.
 
-use crate::path::arc::{arc_inner_points, ellipse_points, EllipseFrame};
+use crate::path::arc::{arc_inner_vertices, ellipse_points, EllipseFrame};
 use crate::path::segment::{emit, Contour, SegmentSink};
 use crate::path::trig::{atan2, div_round, Q30};
 use crate::path::vector::{Pt, Unit, UNIT_X};
@@ -405,7 +405,7 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
         let mut prev = from;
         let tol = self.tol;
         let sink = &mut *self.sink;
-        arc_inner_points(&frame, t0, sweep, tol, |p| {
+        arc_inner_vertices(&frame, t0, sweep, tol, from, &mut |p| {
             emit(sink, prev, p);
             prev = p;
         });
