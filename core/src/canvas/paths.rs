@@ -54,11 +54,27 @@ impl PathSink for Bounds {
     fn close(&mut self) {}
 }
 
-/// The box around a shape's description (`None`: nothing described).
+/// How far a filled or stroked shape's points may lie outside its
+/// description's box, fine units: the area-preserving polygons of curves
+/// put their vertices out of the curve by `(f - 1) r`, about `2.8` fine
+/// units at every radius (the vertex count grows as `sqrt(r)`, see
+/// [`arc`](crate::path::arc)), plus the grid rounding; the cubics of the
+/// description stay within a quarter unit of the curve, their control
+/// points (rounded) hold them.
+const CURVE_MARGIN: i32 = 16;
+
+/// The box around a shape's description (`None`: nothing described),
+/// widened by [`CURVE_MARGIN`] so that it holds the shape's fill and its
+/// stroke's ring too.
 pub(crate) fn shape_bounds<S: Shape + ?Sized>(shape: &S) -> Option<FineRect> {
     let mut b = Bounds::default();
     shape.describe(&mut b);
-    b.0
+    b.0.map(|r| FineRect {
+        x0: r.x0.saturating_sub(CURVE_MARGIN),
+        y0: r.y0.saturating_sub(CURVE_MARGIN),
+        x1: r.x1.saturating_add(CURVE_MARGIN),
+        y1: r.y1.saturating_add(CURVE_MARGIN),
+    })
 }
 
 /// Segments to a closure.
@@ -134,6 +150,76 @@ impl<S: Shape + ?Sized> Outline for Stroked<'_, '_, S> {
             if self.error.get().is_none() {
                 self.error.set(Some(e));
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::path::{
+        Arc, Circle, CornerRadii, Degrees, Ellipse, LineCap, Rectangle, RoundedRectangle, Sector,
+    };
+
+    /// Checks that every point a sink receives lies in a box.
+    struct Inside(FineRect, u32);
+
+    impl SegmentSink for Inside {
+        fn segment(&mut self, a: FinePoint, b: FinePoint) {
+            for p in [a, b] {
+                let r = &self.0;
+                if p.x < r.x0 || p.x > r.x1 || p.y < r.y0 || p.y > r.y1 {
+                    self.1 += 1;
+                }
+            }
+        }
+    }
+
+    fn check<S: Shape>(shape: &S, case: u32) {
+        let tol = Tolerance::DEFAULT;
+        if let Some(b) = shape_bounds(shape) {
+            let mut k = Inside(b, 0);
+            shape.fill_with(tol, &mut k);
+            assert_eq!(k.1, 0, "case {case}: a fill point outside the bounds");
+        }
+        for cap in [LineCap::Butt, LineCap::Round, LineCap::Square] {
+            let style = StrokeStyle::new(300 + case * 37 % 4000).with_cap(cap);
+            if let Some(b) = Stroked::<S>::widen(shape_bounds(shape), &style) {
+                let mut k = Inside(b, 0);
+                let _ = shape.stroke_with(&style, tol, &mut k);
+                assert_eq!(k.1, 0, "case {case}: a stroke point outside the bounds");
+            }
+        }
+    }
+
+    #[test]
+    fn every_point_of_a_shape_lies_in_its_bounds() {
+        // Small radii most of all: there the area-preserving polygons'
+        // vertices stand out of the curve by a few fine units.
+        let mut seed = 0x1f2e_3d4c_5b6a_7988u64;
+        let mut next = |m: u32| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((seed >> 33) % u64::from(m)) as u32
+        };
+        for case in 0..3000 {
+            let c = FinePoint::new(50_000 + next(4096) as i32, 50_000 + next(4096) as i32);
+            let r = 1 + (next(40_000) >> next(12));
+            let r2 = 1 + (next(40_000) >> next(12));
+            let (a, s) = (
+                Degrees::new(next(720) as i32 - 360),
+                Degrees::new(next(720) as i32 - 360),
+            );
+            check(&Circle::new(c, r), case);
+            check(&Ellipse::new(c, r, r2), case);
+            check(&Arc::new(c, r, a, s), case);
+            check(&Sector::new(c, r, a, s), case);
+            let rect = Rectangle::new(c, 2 * r, 2 * r2);
+            check(
+                &RoundedRectangle::new(rect, CornerRadii::uniform(r.min(r2) / 2)),
+                case,
+            );
         }
     }
 }
