@@ -65,15 +65,25 @@ const CURVE_MARGIN: i32 = 16;
 
 /// The box around a shape's description (`None`: nothing described),
 /// widened by [`CURVE_MARGIN`] so that it holds the shape's fill and its
-/// stroke's ring too.
+/// stroke's ring too. A side within the coordinate range stays within it
+/// (segments are clamped into the range, so none lies beyond it); a side
+/// beyond it stays beyond, and the shape is rejected.
 pub(crate) fn shape_bounds<S: Shape + ?Sized>(shape: &S) -> Option<FineRect> {
     let mut b = Bounds::default();
     shape.describe(&mut b);
+    let grow = |v: i32, by: i32| {
+        let w = v.saturating_add(by);
+        if (-FINE_LIMIT..=FINE_LIMIT).contains(&v) {
+            w.clamp(-FINE_LIMIT, FINE_LIMIT)
+        } else {
+            w
+        }
+    };
     b.0.map(|r| FineRect {
-        x0: r.x0.saturating_sub(CURVE_MARGIN),
-        y0: r.y0.saturating_sub(CURVE_MARGIN),
-        x1: r.x1.saturating_add(CURVE_MARGIN),
-        y1: r.y1.saturating_add(CURVE_MARGIN),
+        x0: grow(r.x0, -CURVE_MARGIN),
+        y0: grow(r.y0, -CURVE_MARGIN),
+        x1: grow(r.x1, CURVE_MARGIN),
+        y1: grow(r.y1, CURVE_MARGIN),
     })
 }
 
