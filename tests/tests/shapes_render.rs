@@ -727,6 +727,95 @@ fn band_height_and_the_walk_cache_change_no_bit_of_shapes_and_strokes() {
     );
 }
 
+/// Random curves, many of them larger than the frame: what a band's
+/// canvas leaves out of their descriptions (pieces of arcs and ellipses
+/// off its rows, Béziers off them) changes no bit, in any band height.
+#[test]
+fn curves_give_the_same_bits_in_every_band_height() {
+    let mut rng = Rng(0x5eed_c0de);
+    for case in 0..24 {
+        let mut shapes: Vec<(u8, f64, f64, f64, f64, f64, f64)> = Vec::new();
+        for _ in 0..6 {
+            shapes.push((
+                (rng.f() * 6.0) as u8,
+                rng.range(-20.0, 84.0),
+                rng.range(-20.0, 84.0),
+                rng.range(0.3, 90.0),
+                rng.range(0.3, 40.0),
+                rng.range(-360.0, 360.0),
+                rng.range(-400.0, 400.0),
+            ));
+        }
+        let draw = |c: &mut Canvas<'_, '_, 1>| {
+            for &(kind, x, y, r, r2, a, s) in &shapes {
+                let centre = fine_point(x, y);
+                let rf = (r * 1024.0) as u32;
+                let (a, s) = (Degrees::new(a as i32), Degrees::new(s as i32));
+                let w = (r2 * 300.0) as u32 + 200;
+                let col = [((x + 20.0) * 30.0) as u16];
+                let op = Opacity::from_ratio(2, 3);
+                let _ = match kind {
+                    0 => c.fill_shape(
+                        &Circle::new(centre, rf),
+                        col,
+                        FillRule::NonZero,
+                        Blend::Over,
+                        op,
+                    ),
+                    1 => c.fill_shape(
+                        &Ellipse::new(centre, rf, (r2 * 1024.0) as u32).rotated(a),
+                        col,
+                        FillRule::NonZero,
+                        Blend::Over,
+                        op,
+                    ),
+                    2 => c.fill_shape(
+                        &Sector::new(centre, rf, a, s),
+                        col,
+                        FillRule::NonZero,
+                        Blend::Over,
+                        op,
+                    ),
+                    3 => {
+                        let cap = [LineCap::Butt, LineCap::Round, LineCap::Square][case % 3];
+                        let st = StrokeStyle::new(w).with_cap(cap);
+                        c.stroke_shape(&Arc::new(centre, rf, a, s), &st, col, Blend::Over, op)
+                    }
+                    4 => {
+                        let st = StrokeStyle::new(w);
+                        c.stroke_shape(&Circle::new(centre, rf), &st, col, Blend::Over, op)
+                    }
+                    _ => {
+                        let d = format!(
+                            "M {x} {y} Q {} {} {} {} C {} {} {} {} {x} {} Z",
+                            x + r,
+                            y - r2,
+                            x + 2.0 * r,
+                            y,
+                            x + r,
+                            y + 3.0 * r2,
+                            x - r,
+                            y + r,
+                            y + r2
+                        );
+                        let path = SvgPath::new(&d).unwrap();
+                        c.fill_shape(&path, col, FillRule::EvenOdd, Blend::Over, op)
+                    }
+                };
+            }
+        };
+        let reference = render_canvas::<1>(64, 64, 64, [50], 0, draw);
+        for rows in [1, 3, 8, 16] {
+            let f = render_canvas::<1>(64, 64, rows, [50], 16, draw);
+            assert_eq!(
+                first_diff(&f.raw, &reference.raw),
+                None,
+                "case {case}, {rows} rows"
+            );
+        }
+    }
+}
+
 #[test]
 fn degenerate_shapes_draw_nothing_and_bad_ones_are_reported() {
     let p = FinePoint::new;
