@@ -52,24 +52,67 @@ use super::vector::{div_round_i64, Pt};
 /// The most segments one curve is cut into.
 pub const MAX_CURVE_SEGMENTS: u32 = 1024;
 
-/// `ceil(sqrt(v))` for a `u128` square of a length.
+/// `ceil(sqrt(v))` for a `u128` square of a length: in 64 bits when it
+/// fits (every curve of the coordinate range, and glyphs; a 128-bit root
+/// is a long library loop on a Cortex-M0), the same value either way.
 fn ceil_len(v: u128) -> u64 {
+    if let Ok(v) = u64::try_from(v) {
+        return ceil_sqrt_u64(v);
+    }
     let r = v.isqrt();
     let r = if r * r < v { r + 1 } else { r };
     r.min(u128::from(u64::MAX)) as u64
 }
 
-/// `|d|^2` of a second difference.
+/// `|d|^2` of a second difference: `i64` squares while the components
+/// are below `2^31` (the sum below `2^63`), else `i128`.
 fn norm2(d: Pt) -> u128 {
-    d.dot(d).unsigned_abs()
+    match (i32::try_from(d.x), i32::try_from(d.y)) {
+        (Ok(x), Ok(y)) => {
+            let (x, y) = (i64::from(x), i64::from(y));
+            (x * x + y * y) as u128
+        }
+        _ => d.dot(d).unsigned_abs(),
+    }
 }
 
-/// `n = ceil(sqrt(num * M / (den * tol)))` limited to `1..=MAX`.
+/// `n = ceil(sqrt(num * M / (den * tol)))` limited to `1..=MAX`
+/// (`num, den <= 4`; in 64 bits for `M < 2^61`, the same value).
 fn count_from(m: u64, num: u64, den: u64, tol: i64) -> u32 {
     let tol = tol.max(1) as u64;
-    let q = (u128::from(m) * u128::from(num)).div_ceil(u128::from(den) * u128::from(tol));
-    let q = q.min(u128::from(MAX_CURVE_SEGMENTS) * u128::from(MAX_CURVE_SEGMENTS)) as u64;
+    let cap = u64::from(MAX_CURVE_SEGMENTS) * u64::from(MAX_CURVE_SEGMENTS);
+    let q = if m < 1 << 61 {
+        (m * num).div_ceil(den * tol).min(cap)
+    } else {
+        let q = (u128::from(m) * u128::from(num)).div_ceil(u128::from(den) * u128::from(tol));
+        q.min(u128::from(cap)) as u64
+    };
     (ceil_sqrt_u64(q) as u32).clamp(1, MAX_CURVE_SEGMENTS)
+}
+
+/// The largest `|P_i - P_0|` component for which a curve's vertex sums
+/// fit `i32` with up to [`SMALL_N`] segments: Bernstein numerators add up
+/// to at most `n^3 = 2^15` (cubic; `n^2` quadratic), so the sum of their
+/// products stays below `2^15 2^15 = 2^30`.
+const SMALL_D: i64 = 1 << 15;
+/// Segment counts for the 32-bit vertex evaluation.
+const SMALL_N: i64 = 32;
+
+/// `n / d` rounded, halves away from zero, in 32 bits (`d > 0`): the
+/// value of [`div_round_i64`].
+#[inline]
+fn div_round_i32(n: i32, d: i32) -> i32 {
+    if n >= 0 {
+        (n + d / 2) / d
+    } else {
+        -((d / 2 - n) / d)
+    }
+}
+
+/// True when every component of `ds` is below [`SMALL_D`].
+fn small(ds: &[Pt]) -> bool {
+    ds.iter()
+        .all(|d| d.x.abs() < SMALL_D && d.y.abs() < SMALL_D)
 }
 
 /// Segments for a quadratic within `tol` fine units (before rounding).
@@ -93,6 +136,16 @@ pub(crate) fn quad_at(p: &[Pt; 3], k: u32, n: u32) -> Pt {
     let d1 = p[1].sub(p[0]);
     let d2 = p[2].sub(p[0]);
     let den = n * n;
+    if n <= SMALL_N && small(&[d1, d2]) {
+        // 2 j k + k^2 <= n^2 <= 2^10: the sums stay below 2^25.
+        let (a, b, den) = ((2 * j * k) as i32, (k * k) as i32, den as i32);
+        let x = a * d1.x as i32 + b * d2.x as i32;
+        let y = a * d1.y as i32 + b * d2.y as i32;
+        return Pt::new(
+            p[0].x + i64::from(div_round_i32(x, den)),
+            p[0].y + i64::from(div_round_i32(y, den)),
+        );
+    }
     let x = 2 * j * k * d1.x + k * k * d2.x;
     let y = 2 * j * k * d1.y + k * k * d2.y;
     Pt::new(
@@ -108,6 +161,16 @@ pub(crate) fn cubic_at(p: &[Pt; 4], k: u32, n: u32) -> Pt {
     let (d1, d2, d3) = (p[1].sub(p[0]), p[2].sub(p[0]), p[3].sub(p[0]));
     let (c1, c2, c3) = (3 * j * j * k, 3 * j * k * k, k * k * k);
     let den = n * n * n;
+    if n <= SMALL_N && small(&[d1, d2, d3]) {
+        // c1 + c2 + c3 <= n^3 <= 2^15: the sums stay below 2^30.
+        let (c1, c2, c3, den) = (c1 as i32, c2 as i32, c3 as i32, den as i32);
+        let x = c1 * d1.x as i32 + c2 * d2.x as i32 + c3 * d3.x as i32;
+        let y = c1 * d1.y as i32 + c2 * d2.y as i32 + c3 * d3.y as i32;
+        return Pt::new(
+            p[0].x + i64::from(div_round_i32(x, den)),
+            p[0].y + i64::from(div_round_i32(y, den)),
+        );
+    }
     let x = c1 * d1.x + c2 * d2.x + c3 * d3.x;
     let y = c1 * d1.y + c2 * d2.y + c3 * d3.y;
     Pt::new(
@@ -185,6 +248,72 @@ mod tests {
 
     fn pts<const N: usize>(c: [(i64, i64); N]) -> [Pt; N] {
         c.map(|(x, y)| Pt::new(x, y))
+    }
+
+    /// The evaluations and counts as first written, in 64 and 128 bits.
+    fn quad_at_wide(p: &[Pt; 3], k: u32, n: u32) -> Pt {
+        let (k, n) = (i64::from(k.min(n)), i64::from(n.max(1)));
+        let (d1, d2) = (p[1].sub(p[0]), p[2].sub(p[0]));
+        let j = n - k;
+        let x = 2 * j * k * d1.x + k * k * d2.x;
+        let y = 2 * j * k * d1.y + k * k * d2.y;
+        Pt::new(
+            p[0].x + div_round_i64(x, n * n),
+            p[0].y + div_round_i64(y, n * n),
+        )
+    }
+
+    fn cubic_at_wide(p: &[Pt; 4], k: u32, n: u32) -> Pt {
+        let (k, n) = (i64::from(k.min(n)), i64::from(n.max(1)));
+        let j = n - k;
+        let (d1, d2, d3) = (p[1].sub(p[0]), p[2].sub(p[0]), p[3].sub(p[0]));
+        let (c1, c2, c3) = (3 * j * j * k, 3 * j * k * k, k * k * k);
+        let x = c1 * d1.x + c2 * d2.x + c3 * d3.x;
+        let y = c1 * d1.y + c2 * d2.y + c3 * d3.y;
+        let den = n * n * n;
+        Pt::new(
+            p[0].x + div_round_i64(x, den),
+            p[0].y + div_round_i64(y, den),
+        )
+    }
+
+    fn count_wide(m2: u128, num: u64, den: u64, tol: i64) -> u32 {
+        let r = m2.isqrt();
+        let m = if r * r < m2 { r + 1 } else { r };
+        let q = (m * u128::from(num)).div_ceil(u128::from(den) * tol.max(1) as u128);
+        let q = q.min(1 << 20) as u64;
+        (ceil_sqrt_u64(q) as u32).clamp(1, MAX_CURVE_SEGMENTS)
+    }
+
+    #[test]
+    fn the_short_forms_give_the_wide_forms_bits() {
+        let mut seed = 0x9a3f_0c11_77d2_5e01u64;
+        let mut next = |m: u64| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 20) % m
+        };
+        for case in 0..20_000 {
+            // Spans around the 32-bit forms' limits, and the whole range.
+            let span = [1 << 10, (1 << 15) - 1, 1 << 15, 1 << 16, 1 << 32][case % 5];
+            let mut p = [Pt::default(); 4];
+            for q in p.iter_mut() {
+                let c = |v: u64| v as i64 - (span as i64) / 2 - 7;
+                *q = Pt::new(c(next(span)), c(next(span)));
+            }
+            let n = 1 + next(40) as u32;
+            let k = next(u64::from(n) + 1) as u32;
+            let q3 = [p[0], p[1], p[2]];
+            assert_eq!(quad_at(&q3, k, n), quad_at_wide(&q3, k, n), "{p:?} {k}/{n}");
+            assert_eq!(cubic_at(&p, k, n), cubic_at_wide(&p, k, n), "{p:?} {k}/{n}");
+            let tol = 1 + next(300) as i64;
+            let d = p[0].sub(p[1]).sub(p[1]).add(p[2]);
+            assert_eq!(
+                quad_count(&q3, tol),
+                count_wide(d.dot(d) as u128, 1, 4, tol)
+            );
+        }
     }
 
     #[test]
