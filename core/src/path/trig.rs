@@ -326,8 +326,14 @@ pub(crate) fn atan2(y: i64, x: i64) -> u32 {
     t.rem_euclid(TURN) as u32
 }
 
-/// `ceil(sqrt(v))`.
+/// `ceil(sqrt(v))` (in 32 bits below `2^32`: the same value, without the
+/// 64-bit loop and multiply of a Cortex-M0).
 pub(crate) fn ceil_sqrt_u64(v: u64) -> u64 {
+    if let Ok(w) = u32::try_from(v) {
+        let r = w.isqrt();
+        // r < 2^16: r^2 fits.
+        return u64::from(if r * r < w { r + 1 } else { r });
+    }
     let r = v.isqrt();
     if r * r < v {
         r + 1
@@ -542,6 +548,23 @@ mod tests {
         assert_eq!(u128::MAX.isqrt(), u128::from(u64::MAX));
         assert_eq!(ceil_sqrt_u64(17), 5);
         assert_eq!(ceil_sqrt_u64(16), 4);
+        // The ceiling about the 32-bit form's edge and squares around it.
+        for v in [
+            0u64,
+            1,
+            2,
+            (1 << 32) - 1,
+            1 << 32,
+            (1 << 32) + 1,
+            65535 * 65535,
+            65535 * 65535 + 1,
+            u64::from(u32::MAX) - 5,
+            u64::MAX,
+        ] {
+            let c = u128::from(ceil_sqrt_u64(v));
+            assert!(c * c >= u128::from(v), "{v}");
+            assert!(c == 0 || (c - 1) * (c - 1) < u128::from(v), "{v}");
+        }
     }
 
     #[test]
