@@ -14,6 +14,9 @@
 # ST7789 would be sent over SPI:
 #     pixels * 2 + windows * (3 command + 8 parameter bytes)
 # (CASET, RASET, RAMWR per window; softedge sends a window per band).
+# Last (issue 14: the firmware's band height), the RP2040 firmware's
+# panel (boards/rp2040-st7789/src/ui.rs), a whole frame and the mean of
+# 60 partial redraws, by band height.
 #
 # Installs nothing. Needs (once per machine):
 #   rustup target add thumbv6m-none-eabi
@@ -71,6 +74,10 @@ $1 == "redraw" {
     redraw[$2, $3] = $4; windows[$2, $3] = $5; pixels[$2, $3] = $6; bytes[$2, $3] = $7
 }
 $1 == "workload" { tris[$2] = $3; area2[$2] = $4; marginal2[$2] = $5 }
+$1 == "panel" {
+    if (!($2 in pseen)) { pseen[$2] = 1; porder[++np] = $2 }
+    pbytes[$2] = $3; panel[$2, $4] = $5
+}
 $1 == "insns" {
     r = $2; w = $3; n = $4; rows = $5
     if (!(r in seen)) { seen[r] = 1; order[++nr] = r }
@@ -169,6 +176,14 @@ END {
             printf "| %s | %s | %s | %s | %s | %s |\n", (r in rlabel ? rlabel[r] : r), wlabel[w], \
                 group(redraw[r, w]), group(windows[r, w]), group(pixels[r, w]), group(bytes[r, w])
         }
+    }
+    printf "\nThe RP2040 firmware'"'"'s panel (boards/rp2040-st7789/src/ui.rs: dial, ticks, needle, arc gauge with round caps, readout, button), "
+    printf "softedge AA into a one-band stream; whole frame, and the mean of its partial redraws (frames 1..60, each from the one before, `render_window` per dirty rectangle), by band height:\n\n"
+    printf "| band rows | band buffers, bytes | whole frame | partial redraw, mean |\n"
+    printf "| ---: | ---: | ---: | ---: |\n"
+    for (i = 1; i <= np; i++) {
+        r = porder[i]
+        printf "| %s | %s | %s | %s |\n", r, group(pbytes[r]), group(panel[r, "whole"]), group(panel[r, "partial"])
     }
 }' "$out"
 ms=$(( (end - start) / 1000000 ))

@@ -15,6 +15,7 @@
 //! insns <renderer> <workload> <triangles drawn> <band rows> <instructions>
 //! shape <renderer> <none|circle|gauge|gauge_round> <instructions>
 //! redraw <renderer> <full|window> <instructions> <windows> <pixels> <SPI bytes>
+//! panel <band rows> <band buffer bytes> <whole|partial> <instructions>
 //! stack_bytes <n>
 //! done
 //! ```
@@ -39,6 +40,7 @@
 #![no_main]
 
 mod cmdline;
+mod panel;
 
 use core::hint::black_box;
 
@@ -75,6 +77,10 @@ fn main() -> ! {
     static mut SLOTS3: [WalkSlot<3>; SLOTS] = [WalkSlot::EMPTY; SLOTS];
     static mut SLOTS1: [WalkSlot<1>; SLOTS] = [WalkSlot::EMPTY; SLOTS];
     static mut FB: [u16; FB_LEN] = [0; FB_LEN];
+    static mut PANEL_ACC: [i32; panel::ACC_LEN] = [0; panel::ACC_LEN];
+    static mut PANEL_COVER: [i32; panel::COVER_LEN] = [0; panel::COVER_LEN];
+    static mut PANEL_OUT: [u16; panel::OUT_LEN] = [0; panel::OUT_LEN];
+    static mut PANEL_SLOTS: [WalkSlot<3>; panel::SLOTS] = [WalkSlot::EMPTY; panel::SLOTS];
     static mut STOCK: eg_side::StockFramebuffer = eg_side::StockFramebuffer::new();
     fw::stack::paint();
     let Some(core) = cortex_m::Peripherals::take() else {
@@ -176,6 +182,44 @@ fn main() -> ! {
             black_box(targets.stock.data());
             true
         });
+    }
+
+    // The RP2040 firmware's panel (issue 14: its band height): a whole
+    // frame and the mean partial redraw by band height.
+    let mut pb = panel::PanelBuffers {
+        acc: PANEL_ACC,
+        cover: PANEL_COVER,
+        out: PANEL_OUT,
+        slots: PANEL_SLOTS,
+    };
+    for rows in panel::ROWS {
+        let p0 = panel::Panel::at(0);
+        if let Some((insns, ok)) = bench.measure("panel", "whole", 0, 0, rows, || {
+            panel::frame(&p0, None, rows, &mut pb)
+        }) {
+            bench.panel_line(ok, rows, "whole", insns);
+        }
+        let mut total = 0u64;
+        let mut all_ok = true;
+        let mut ran = false;
+        for f in 1..=panel::PARTIAL_FRAMES {
+            let (before, now) = (panel::Panel::at(f - 1), panel::Panel::at(f));
+            if let Some((insns, ok)) = bench.measure("panel", "partial", 0, 0, rows, || {
+                panel::frame(&now, Some(&before), rows, &mut pb)
+            }) {
+                total += insns;
+                all_ok &= ok;
+                ran = true;
+            }
+        }
+        if ran {
+            bench.panel_line(
+                all_ok,
+                rows,
+                "partial",
+                total / u64::from(panel::PARTIAL_FRAMES),
+            );
+        }
     }
 
     // Partial redraw (issue 15): the dial scene whole and in the dirty
@@ -334,6 +378,19 @@ impl Bench<'_> {
             .dec(u64::from(spi.pixels))
             .text(" ")
             .dec(u64::from(spi.bytes()))
+            .print();
+    }
+
+    /// Prints `panel <rows> <band bytes> <whole|partial> <instructions>`.
+    fn panel_line(&mut self, ok: bool, rows: u16, what: &str, insns: u64) {
+        Self::tag(ok, "panel ")
+            .dec(u64::from(rows))
+            .text(" ")
+            .dec(panel::band_bytes(rows) as u64)
+            .text(" ")
+            .text(what)
+            .text(" ")
+            .dec(insns)
             .print();
     }
 
