@@ -117,6 +117,16 @@ fn probes(key: u64, len: usize) -> impl Iterator<Item = usize> {
     (0..PROBE.min(len)).map(move |i| if h + i >= len { h + i - len } else { h + i })
 }
 
+/// `a == b`, word by word: the array comparison becomes a `memcmp` call
+/// on the Cortex-M0, several times longer than these six words, and it
+/// runs for every edge of every shape in every band it touches.
+#[inline]
+fn same(a: &[i32; 6], b: &[i32; 6]) -> bool {
+    let d = (a[0] ^ b[0]) | (a[1] ^ b[1]) | (a[2] ^ b[2]);
+    let e = (a[3] ^ b[3]) | (a[4] ^ b[4]) | (a[5] ^ b[5]);
+    d | e == 0
+}
+
 fn edge_made_of(p0: FinePoint, p1: FinePoint, tag: i32) -> [i32; 6] {
     [p0.x, p0.y, p1.x, p1.y, tag, 0]
 }
@@ -159,7 +169,7 @@ impl<'a, const C: usize> WalkCache<'a, C> {
         probes(k, self.slots.len()).find(|&i| {
             self.slots
                 .get(i)
-                .is_some_and(|s| s.key == k && s.made_of == *made_of)
+                .is_some_and(|s| s.key == k && same(&s.made_of, made_of))
         })
     }
 
