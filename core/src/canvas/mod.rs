@@ -695,17 +695,17 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
                         .as_deref_mut()
                         .and_then(|c| c.walk(serial, k, p0, p1, tag))
                     {
-                        w.walk(rows.clone(), buf);
+                        w.walk_band(rows.clone(), buf);
                     } else if let Some(mut w) = EdgeWalk::new(p0, p1, mode, cols.clone()) {
                         // Kept only if it goes on below this band.
                         match cache.as_deref_mut() {
                             Some(c) if w.rows().end > rows.end => {
                                 match c.place_walk(serial, k, p0, p1, tag, rows.start, w) {
-                                    Ok(s) => s.walk(rows.clone(), buf),
-                                    Err(mut w) => w.walk(rows.clone(), buf),
+                                    Ok(s) => s.walk_band(rows.clone(), buf),
+                                    Err(mut w) => w.walk_band(rows.clone(), buf),
                                 }
                             }
-                            _ => w.walk(rows.clone(), buf),
+                            _ => w.walk_band(rows.clone(), buf),
                         }
                     }
                 }
