@@ -29,7 +29,7 @@ pub use cache::{WalkCache, WalkSlot};
 use core::ops::Range;
 
 use crate::band::{BandBuffer, ComposeOp, Coverage, Paint};
-use crate::edge::{AliasedWalk, AreaMode, EdgeWalk};
+use crate::edge::{AliasedWalk, AreaMode};
 use crate::geom::{FinePoint, SubPoint, FINE_BITS};
 use crate::pixel_model::{walk_bed_of_nails, walk_circular, walk_hex19, walk_hex7, CircularFilter};
 use crate::raster::{DrawError, PixelModel, RenderStyle};
@@ -689,26 +689,16 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
                 return;
             }
             match kind {
-                WalkKind::Box(mode) => {
-                    let tag = mode as i32;
-                    if let Some(w) = cache
-                        .as_deref_mut()
-                        .and_then(|c| c.walk(serial, k, p0, p1, tag))
-                    {
-                        w.walk_band(rows.clone(), buf);
-                    } else if let Some(mut w) = EdgeWalk::new(p0, p1, mode, cols.clone()) {
-                        // Kept only if it goes on below this band.
-                        match cache.as_deref_mut() {
-                            Some(c) if w.rows().end > rows.end => {
-                                match c.place_walk(serial, k, p0, p1, tag, rows.start, w) {
-                                    Ok(s) => s.walk_band(rows.clone(), buf),
-                                    Err(mut w) => w.walk_band(rows.clone(), buf),
-                                }
-                            }
-                            _ => w.walk_band(rows.clone(), buf),
-                        }
-                    }
-                }
+                WalkKind::Box(mode) => cache::walk_edge(
+                    cache.as_deref_mut(),
+                    serial,
+                    k,
+                    (p0, p1),
+                    mode,
+                    &cols,
+                    rows.clone(),
+                    buf,
+                ),
                 WalkKind::Aliased => {
                     if let Some(w) = cache
                         .as_deref_mut()

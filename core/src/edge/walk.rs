@@ -171,11 +171,22 @@ impl EdgeWalk {
         columns: Range<i32>,
     ) -> Option<Self> {
         let e = Canon::new(p0, p1)?;
+        let mut walk = Self::unclipped(e, mode, columns.start);
+        walk.clip(columns);
+        Some(walk)
+    }
+
+    /// [`new`](Self::new) of canonical edge `e`, before
+    /// [`clip`](Self::clip). Always inlined, so that the walk is built
+    /// where the caller keeps it: a walk is a few hundred bytes, and on the
+    /// Cortex-M0 a copy of it costs about as much as walking a short edge.
+    #[inline(always)]
+    pub(crate) fn unclipped(e: Canon, mode: AreaMode, c_lo: i32) -> Self {
         let (a0, a1) = e.columns();
         let (b0, b1) = e.rows();
         // ONE dv <= 2^38; in 32 bits for edges of dv < 2^16.
         let (q, rr) = udivmod((e.dv as u64) << COVER_BITS, e.du as u64);
-        let mut walk = Self {
+        Self {
             e,
             exact: mode == AreaMode::Exact,
             a0,
@@ -189,24 +200,37 @@ impl EdgeWalk {
             cross: None,
             va: 0,
             vb: -1,
-            c_lo: columns.start,
+            c_lo,
             r_in: b0,
             r_out: b1 + 1,
             resume: None,
-        };
-        if !e.transposed {
-            walk.clip_columns(columns);
         }
-        Some(walk)
+    }
+
+    /// The set-up's last step: which columns of an x-major edge are
+    /// visible in frame columns `columns` (those given to
+    /// [`unclipped`](Self::unclipped) as `c_lo..`).
+    #[inline(always)]
+    pub(crate) fn clip(&mut self, columns: Range<i32>) {
+        if !self.e.transposed {
+            self.clip_columns(columns);
+        }
+    }
+
+    /// The frame rows canonical edge `e` touches: [`rows`](Self::rows) of
+    /// its walk, known before the set-up.
+    #[inline]
+    pub(crate) fn rows_of(e: &Canon) -> Range<i32> {
+        let (a0, a1) = if e.transposed { e.columns() } else { e.rows() };
+        a0..a1 + 1
     }
 
     /// The frame rows the edge touches.
+    // The canvas asks `rows_of` before the set-up; this is for the
+    // `internals` API.
+    #[cfg_attr(not(feature = "internals"), allow(dead_code))]
     pub fn rows(&self) -> Range<i32> {
-        if self.e.transposed {
-            self.a0..self.a1 + 1
-        } else {
-            self.b0..self.b1 + 1
-        }
+        Self::rows_of(&self.e)
     }
 
     /// Reports the edge's pixels in frame rows `rows` to `sink`.
