@@ -130,6 +130,18 @@ struct Resume {
 /// contours is, in every pixel, the integral of the winding number.
 #[derive(Debug, Clone, Copy)]
 pub struct EdgeWalk {
+    /// The set-up: what the walk of every band reads.
+    g: Geom,
+    /// The crossing constants, once a walk has needed them.
+    cross: Option<Crossings>,
+    /// Where the last band's walk stopped (stepped in place by the next).
+    resume: Option<Resume>,
+}
+
+/// The set-up of an [`EdgeWalk`], apart from its state (so that a walk
+/// can step its state in place while reading these).
+#[derive(Debug, Clone, Copy)]
+struct Geom {
     e: Canon,
     exact: bool,
     /// First and last major columns, first and last minor rows.
@@ -145,8 +157,6 @@ pub struct EdgeWalk {
     /// first interior column's main term follow without dividing.
     lc0: Lv,
     lc1: Lv,
-    /// The crossing constants, once a walk has needed them.
-    cross: Option<Crossings>,
     /// x-major only: the visible major columns `va..=vb` (empty when
     /// `va > vb`), the frame column covers left of them go to, and the
     /// rows whose cover columns lie left of the frame: `b0..r_in` (not
@@ -156,7 +166,6 @@ pub struct EdgeWalk {
     c_lo: i32,
     r_in: i32,
     r_out: i32,
-    resume: Option<Resume>,
 }
 
 impl EdgeWalk {
@@ -187,22 +196,24 @@ impl EdgeWalk {
         // ONE dv <= 2^38; in 32 bits for edges of dv < 2^16.
         let (q, rr) = udivmod((e.dv as u64) << COVER_BITS, e.du as u64);
         Self {
-            e,
-            exact: mode == AreaMode::Exact,
-            a0,
-            a1,
-            b0,
-            b1,
-            q: q as i32,
-            rr: rr as i32,
-            lc0: e.line_near_end(a0 * N + N / 2, false),
-            lc1: e.line_near_end(a1 * N + N / 2, true),
+            g: Geom {
+                e,
+                exact: mode == AreaMode::Exact,
+                a0,
+                a1,
+                b0,
+                b1,
+                q: q as i32,
+                rr: rr as i32,
+                lc0: e.line_near_end(a0 * N + N / 2, false),
+                lc1: e.line_near_end(a1 * N + N / 2, true),
+                va: 0,
+                vb: -1,
+                c_lo,
+                r_in: b0,
+                r_out: b1 + 1,
+            },
             cross: None,
-            va: 0,
-            vb: -1,
-            c_lo,
-            r_in: b0,
-            r_out: b1 + 1,
             resume: None,
         }
     }
@@ -212,8 +223,8 @@ impl EdgeWalk {
     /// [`unclipped`](Self::unclipped) as `c_lo..`).
     #[inline(always)]
     pub(crate) fn clip(&mut self, columns: Range<i32>) {
-        if !self.e.transposed {
-            self.clip_columns(columns);
+        if !self.g.e.transposed {
+            self.g.clip_columns(columns);
         }
     }
 
@@ -230,7 +241,7 @@ impl EdgeWalk {
     // `internals` API.
     #[cfg_attr(not(feature = "internals"), allow(dead_code))]
     pub fn rows(&self) -> Range<i32> {
-        Self::rows_of(&self.e)
+        Self::rows_of(&self.g.e)
     }
 
     /// Reports the edge's pixels in frame rows `rows` to `sink`.
@@ -256,15 +267,17 @@ impl EdgeWalk {
         if rows.start >= rows.end {
             return;
         }
-        if self.e.transposed {
+        if self.g.e.transposed {
             self.y_major(rows, out);
-        } else if self.e.mirrored {
+        } else if self.g.e.mirrored {
             self.x_major::<S, true>(rows, out);
         } else {
             self.x_major::<S, false>(rows, out);
         }
     }
+}
 
+impl Geom {
     // ---- set-up ------------------------------------------------------------
 
     /// x-major: which major columns are visible, and the rows whose covers
@@ -392,7 +405,7 @@ impl EdgeWalk {
     /// or after it, if one comes before the edge's last column (set-up on
     /// first use: the constants, then the state, eight divisions in all;
     /// none when the rest of the edge crosses no boundary inside).
-    fn track(&mut self, a: i32) -> Next {
+    fn track(&self, cross: &mut Option<Crossings>, a: i32) -> Next {
         if !self.exact {
             return Next::Done;
         }
@@ -426,10 +439,10 @@ impl EdgeWalk {
                 down: !left,
             };
         }
-        let k = match self.cross {
+        let k = match *cross {
             Some(k) => k,
             None => match Crossings::new(self.e.du, self.e.dv) {
-                Some(k) => *self.cross.insert(k),
+                Some(k) => *cross.insert(k),
                 None => return Next::Done,
             },
         };
@@ -438,8 +451,8 @@ impl EdgeWalk {
 
     /// Moves the tracker past the crossings in columns up to `a` (an end
     /// column: its crossings are in its direct areas).
-    fn skip_crossings(&self, x: &mut Next, a: i32) {
-        match (&mut *x, &self.cross) {
+    fn skip_crossings(&self, cross: &Option<Crossings>, x: &mut Next, a: i32) {
+        match (&mut *x, cross) {
             (Next::At(c), Some(k)) => {
                 while c.col <= a && c.m <= self.last_boundary() {
                     c.advance(k);
@@ -561,6 +574,34 @@ impl EdgeWalk {
         c.min(self.b1).max(self.b0)
     }
 
+    /// The state at which band `y0`'s walk starts, evaluated directly
+    /// (divides).
+    fn x_start(&self, y0: i32) -> Resume {
+        let col = if y0 <= self.b0 {
+            self.a0
+        } else {
+            // The column holding the crossing of the band's top boundary.
+            self.e.crossing(y0).0
+        };
+        let a = col.max(self.va);
+        let prev = if a == self.a0 {
+            self.b0
+        } else {
+            (y0 - 1)
+                .max(self.b0)
+                .max(if self.e.mirrored { self.b0 } else { self.r_in })
+        };
+        Resume {
+            row: y0,
+            a,
+            prev,
+            st: None,
+            x: if self.exact { Next::Unset } else { Next::Done },
+        }
+    }
+}
+
+impl EdgeWalk {
     // ---- the two walks -----------------------------------------------------
 
     /// Edges at most 45° from horizontal: major columns are frame columns
@@ -573,68 +614,78 @@ impl EdgeWalk {
     /// `(a, b)` of canonical area `S` is `+w S` at `pos(a)` and `-w S` at
     /// `pos(a + 1)`, a cover `h` from column `a` on is `+w h` at `pos(a)`.
     fn x_major<S: DeltaSink, const MIRRORED: bool>(&mut self, rows: Range<i32>, mut out: S) {
+        let g = &self.g;
         let (y0, y1) = (rows.start, rows.end);
-        let (b0, b1) = (self.b0, self.b1);
+        let (b0, b1) = (g.b0, g.b1);
         let lo = y0.max(b0);
         let hi = y1.min(b1 + 1);
         if lo >= hi {
             return;
         }
-        let w = i32::from(self.e.dir);
+        let w = i32::from(g.e.dir);
         let pos = |a: i32| if MIRRORED { a.saturating_neg() } else { a };
         let step_x = if MIRRORED { -1 } else { 1 };
         // Rows whose covers lie left of the frame: straight to c_lo.
         let left = if MIRRORED {
-            self.r_out..b1 + 1
+            g.r_out..b1 + 1
         } else {
-            b0..self.r_in
+            b0..g.r_in
         };
         for row in lo.max(left.start)..hi.min(left.end) {
-            out.put(self.c_lo, row, w * self.row_cover(row));
+            out.put(g.c_lo, row, w * g.row_cover(row));
         }
         // Where the walk starts: where the last band stopped, or directly
         // at the column holding the crossing of this band's top boundary.
-        let start = match self.resume.take() {
-            Some(r) if r.row == y0 => r,
-            _ => self.x_start(y0),
+        let (mut a, mut prev, mut st, mut x) = match &self.resume {
+            Some(r) if r.row == y0 => (r.a, r.prev, r.st, r.x),
+            _ => {
+                let r = g.x_start(y0);
+                (r.a, r.prev, r.st, r.x)
+            }
         };
-        let (mut a, mut prev, mut st, mut x) = (start.a, start.prev, start.st, start.x);
-        let mut next: Option<Resume> = None;
+        // Whether the state the next band starts from is stored yet: it is
+        // written in place when the walk reaches it (a resume is a few
+        // dozen words, and each copy of one costs on the Cortex-M0).
+        let mut next = false;
         // What the last column walked left to add at `pos(a)` of its main
         // row (the `-S` of its main cell, and of a spill there): the row
         // and the canonical value.
         let mut pend: Option<(i32, i32)> = None;
         loop {
-            if a > self.vb {
+            if a > g.vb {
                 if let Some((pb, pv)) = pend.take() {
                     out.put(pos(a), pb, w * pv);
                 }
-                if a > self.a1 && self.vb == self.a1 {
+                if a > g.a1 && g.vb == g.a1 {
                     // Past the end: the last rows' covers right of it.
-                    let col = pos(self.a1 + 1);
+                    let col = pos(g.a1 + 1);
                     for row in prev.max(lo)..=b1.min(hi - 1) {
-                        out.put(col, row, w * self.row_cover(row));
+                        out.put(col, row, w * g.row_cover(row));
                     }
                 }
                 // Nothing more to walk from here, unless a column already
                 // walked reaches into the next band.
-                next = next.or(Some(Resume {
-                    row: y1,
-                    a,
-                    prev,
-                    st: None,
-                    x: Next::Done,
-                }));
+                if !next {
+                    next = true;
+                    self.resume = Some(Resume {
+                        row: y1,
+                        a,
+                        prev,
+                        st: None,
+                        x: Next::Done,
+                    });
+                }
                 break;
             }
-            let is_end = a == self.a0 || a == self.a1;
+            let is_end = a == g.a0 || a == g.a1;
             if is_end {
                 if let Some((pb, pv)) = pend.take() {
                     out.put(pos(a), pb, w * pv);
                 }
-                let bc = self.centre_cell(a);
-                if next.is_none() && self.end_last_cell(a) >= y1 {
-                    next = Some(Resume {
+                let bc = g.centre_cell(a);
+                if !next && g.end_last_cell(a) >= y1 {
+                    next = true;
+                    self.resume = Some(Resume {
                         row: y1,
                         a,
                         prev,
@@ -643,11 +694,11 @@ impl EdgeWalk {
                     });
                 }
                 let (pa, pa1) = (pos(a), pos(a + 1));
-                self.end_cells(a, bc, |b, v| out.put2(pa, pa1, b, w * v, -w * v));
+                g.end_cells(a, bc, |b, v| out.put2(pa, pa1, b, w * v, -w * v));
                 // Crossings inside an end column are in its direct areas.
-                self.skip_crossings(&mut x, a);
+                g.skip_crossings(&self.cross, &mut x, a);
                 for row in prev.max(lo)..bc.min(hi) {
-                    out.put(pa, row, w * self.row_cover(row));
+                    out.put(pa, row, w * g.row_cover(row));
                 }
                 prev = prev.max(bc);
                 st = None;
@@ -664,13 +715,13 @@ impl EdgeWalk {
                         Next::Unset => a,
                         x => x.col(),
                     };
-                    let stop = x_col.min(self.a1).min(self.vb.saturating_add(1));
+                    let stop = x_col.min(g.a1).min(g.vb.saturating_add(1));
                     if stop > a {
                         let (mut ss, mut r) = (s.s, s.r);
                         // The first change also takes what the last column
                         // left (0 after a plain one).
                         let mut carry = pv + s.s;
-                        let (q, rr, du, h) = (self.q, self.rr, self.e.du, s.h);
+                        let (q, rr, du, h) = (g.q, g.rr, g.e.du, s.h);
                         let done = out.run(pos(a), s.b, step_x, stop - a, || {
                             let mut d = q;
                             let mut r2 = r + rr;
@@ -702,19 +753,20 @@ impl EdgeWalk {
                     }
                 }
             }
-            let s = self.main_term(st, a);
+            let s = g.main_term(st, a);
             if let Next::Unset = x {
-                x = self.track(a);
+                x = g.track(&mut self.cross, a);
             }
             let (here, down) = match x.down_at(a, &self.cross) {
                 Some(down) => (true, down),
                 None => (false, false),
             };
             let bc = s.b;
-            if next.is_none() && bc + i32::from(down) >= y1 {
+            if !next && bc + i32::from(down) >= y1 {
                 // The first column reaching below this band: the next band
                 // starts here.
-                next = Some(Resume {
+                next = true;
+                self.resume = Some(Resume {
                     row: y1,
                     a,
                     prev,
@@ -738,9 +790,9 @@ impl EdgeWalk {
             }
             for row in prev..bc {
                 if row == bc - 1 {
-                    up0 += self.row_cover(row);
+                    up0 += g.row_cover(row);
                 } else if row >= lo && row < hi {
-                    out.put(pa, row, w * self.row_cover(row));
+                    out.put(pa, row, w * g.row_cover(row));
                 }
             }
             if here {
@@ -776,32 +828,8 @@ impl EdgeWalk {
             }
             a += 1;
         }
-        self.resume = next;
-    }
-
-    /// The state at which band `y0`'s walk starts, evaluated directly
-    /// (divides).
-    fn x_start(&self, y0: i32) -> Resume {
-        let col = if y0 <= self.b0 {
-            self.a0
-        } else {
-            // The column holding the crossing of the band's top boundary.
-            self.e.crossing(y0).0
-        };
-        let a = col.max(self.va);
-        let prev = if a == self.a0 {
-            self.b0
-        } else {
-            (y0 - 1)
-                .max(self.b0)
-                .max(if self.e.mirrored { self.b0 } else { self.r_in })
-        };
-        Resume {
-            row: y0,
-            a,
-            prev,
-            st: None,
-            x: if self.exact { Next::Unset } else { Next::Done },
+        if !next {
+            self.resume = None;
         }
     }
 
@@ -813,35 +841,48 @@ impl EdgeWalk {
     /// `mpos(b)` and `+w S` at `mpos(b + 1)` of row `a`, the row's cover
     /// `+w h` at `mpos(bc)`.
     fn y_major<S: DeltaSink>(&mut self, rows: Range<i32>, mut out: S) {
-        let lo = rows.start.max(self.a0);
-        let hi = rows.end.min(self.a1 + 1);
+        let g = &self.g;
+        let lo = rows.start.max(g.a0);
+        let hi = rows.end.min(g.a1 + 1);
         if lo >= hi {
             return;
         }
-        let w = i32::from(self.e.dir);
-        let mirrored = self.e.mirrored;
+        let w = i32::from(g.e.dir);
+        let mirrored = g.e.mirrored;
         let mpos = |b: i32| if mirrored { b.saturating_neg() } else { b };
         let step_x = if mirrored { -1 } else { 1 };
-        let (mut st, mut x) = match self.resume.take() {
-            Some(r) if r.a == lo => (r.st, r.x),
-            _ => (None, if self.exact { Next::Unset } else { Next::Done }),
+        // The state is stepped where it is kept (a start is written over a
+        // stale one): a copy in and out would cost as much as a few rows.
+        if !matches!(&self.resume, Some(r) if r.a == lo) {
+            self.resume = Some(Resume {
+                row: lo,
+                a: lo,
+                prev: 0,
+                st: None,
+                x: if g.exact { Next::Unset } else { Next::Done },
+            });
+        }
+        let Some(r) = self.resume.as_mut() else {
+            return;
         };
+        let x = &mut r.x;
+        let mut st = r.st;
         for a in lo..hi {
-            if a == self.a0 || a == self.a1 {
+            if a == g.a0 || a == g.a1 {
                 st = None;
-                let bc = self.centre_cell(a);
-                self.end_cells(a, bc, |b, v| {
+                let bc = g.centre_cell(a);
+                g.end_cells(a, bc, |b, v| {
                     out.put(mpos(b), a, -w * v);
                     out.put(mpos(b + 1), a, w * v);
                 });
-                self.skip_crossings(&mut x, a);
-                out.put(mpos(bc), a, w * self.column_cover(a));
+                g.skip_crossings(&self.cross, x, a);
+                out.put(mpos(bc), a, w * g.column_cover(a));
                 continue;
             }
-            let s = self.main_term(st, a);
+            let s = g.main_term(st, a);
             st = Some(s);
             if let Next::Unset = x {
-                x = self.track(a);
+                *x = g.track(&mut self.cross, a);
             }
             let bc = s.b;
             match x.down_at(a, &self.cross) {
@@ -868,13 +909,7 @@ impl EdgeWalk {
                 None => out.put_n(mpos(bc), a, step_x, [w * (ONE - s.s), w * s.s]),
             }
         }
-        self.resume = Some(Resume {
-            row: hi,
-            a: hi,
-            prev: 0,
-            st,
-            x,
-        });
+        (r.row, r.a, r.prev, r.st) = (hi, hi, 0, st);
     }
 }
 
