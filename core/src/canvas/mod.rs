@@ -105,13 +105,26 @@ impl Outline for Contour<'_> {
 
 impl Outline for [FinePoint; 3] {
     fn bounds(&self) -> Option<FineRect> {
-        FineRect::around(self.iter().copied())
+        Some(triangle_box(self))
     }
     fn segments<F: FnMut(FinePoint, FinePoint)>(&self, mut f: F) {
         let [a, b, c] = *self;
         f(a, b);
         f(b, c);
         f(c, a);
+    }
+}
+
+/// The box around a triangle's vertices ([`FineRect::around`] unrolled:
+/// every shape in every band is tested against the band with it).
+#[inline]
+fn triangle_box(v: &[FinePoint; 3]) -> FineRect {
+    let [a, b, c] = v;
+    FineRect {
+        x0: a.x.min(b.x).min(c.x),
+        y0: a.y.min(b.y).min(c.y),
+        x1: a.x.max(b.x).max(c.x),
+        y1: a.y.max(b.y).max(c.y),
     }
 }
 
@@ -561,14 +574,17 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         colors: [[u16; C]; 3],
         op: ComposeOp,
     ) -> Result<(), DrawError> {
-        for p in v {
-            if !p.in_range() {
-                return Err(DrawError::FineCoord(p));
+        // Every vertex is in range when the box's corners are (the range is
+        // a box): two tests for the shapes of every band, and the first
+        // vertex out of range looked for only when there is one.
+        let b = triangle_box(&v);
+        if !(FinePoint::new(b.x0, b.y0).in_range() && FinePoint::new(b.x1, b.y1).in_range()) {
+            for p in v {
+                if !p.in_range() {
+                    return Err(DrawError::FineCoord(p));
+                }
             }
         }
-        let Some(b) = v.bounds() else {
-            return Ok(());
-        };
         if !self.touches(&b) {
             return Ok(());
         }
