@@ -50,10 +50,17 @@ enum Next {
     Done,
     /// The next crossing at or after the walk's column.
     At(Crossing),
-    /// The last interior crossing, evaluated directly: its column, its
+    /// One of the last few interior crossings, evaluated directly:
+    /// boundary `m` (the walk needs those before `end`), its column, its
     /// spill (area units), and whether the line leaves the row there (the
     /// crossing lies right of the column centre).
-    One { col: i32, t: i32, down: bool },
+    Direct {
+        m: i32,
+        end: i32,
+        col: i32,
+        t: i32,
+        down: bool,
+    },
 }
 
 impl Next {
@@ -62,7 +69,7 @@ impl Next {
     fn col(&self) -> i32 {
         match self {
             Next::At(c) => c.col,
-            Next::One { col, .. } => *col,
+            Next::Direct { col, .. } => *col,
             Next::Done | Next::Unset => i32::MAX,
         }
     }
@@ -73,28 +80,69 @@ impl Next {
     fn down_at(&self, a: i32, cross: &Option<Crossings>) -> Option<bool> {
         match (self, cross) {
             (Next::At(c), Some(k)) if c.col == a => Some(!c.is_left(k)),
-            (Next::One { col, down, .. }, _) if *col == a => Some(*down),
+            (Next::Direct { col, down, .. }, _) if *col == a => Some(*down),
             _ => None,
         }
     }
 
     /// The spill of the crossing in column `a` (see
     /// [`down_at`](Self::down_at)), and on to the next crossing.
-    #[inline]
-    fn take_spill(&mut self, cross: &Option<Crossings>) -> i32 {
+    #[inline(always)]
+    fn take_spill(&mut self, e: &Canon, cross: &Option<Crossings>) -> i32 {
         match (&mut *self, cross) {
             (Next::At(c), Some(k)) => {
                 let t = c.spill(k);
                 c.advance(k);
                 t
             }
-            (Next::One { t, .. }, _) => {
+            (Next::Direct { t, .. }, _) => {
                 let t = *t;
-                *self = Next::Done;
+                self.pass_direct(e);
                 t
             }
             _ => 0,
         }
+    }
+
+    /// Past a directly evaluated crossing: on to the next one, evaluated
+    /// directly too, or done.
+    #[inline(never)]
+    fn pass_direct(&mut self, e: &Canon) {
+        if let Next::Direct { m, end, .. } = *self {
+            *self = if m + 1 < end {
+                direct(e, m + 1, end)
+            } else {
+                Next::Done
+            };
+        }
+    }
+}
+
+/// Most interior crossings an edge's walk evaluates directly, each with
+/// two divisions, instead of setting up the stepping (eight divisions,
+/// most of them 64-bit on the edges of more than a few pixels): short
+/// edges cross only a few boundaries. 4 and 5 measure best on the
+/// Cortex-M0 benchmark's small triangles; longer edges are not slowed.
+const DIRECT: i32 = 4;
+
+/// The crossing of boundary `m` of `e` (`m < end`), evaluated directly (two
+/// divisions). `x = xi` or `N dv - xi` (below `2^32`), the spill `x² / D`:
+/// the same floor the stepped tracker keeps. Out of line: the walks'
+/// column loops keep their registers.
+#[inline(never)]
+fn direct(e: &Canon, m: i32, end: i32) -> Next {
+    let (col, xi) = e.crossing(m);
+    let ndv = u64::from(N as u32) * e.dv as u64;
+    let left = 2 * xi <= ndv;
+    let x = if left { xi } else { ndv - xi } as u32;
+    let d = mul_wide(e.du as u32, e.dv as u32) << crate::edge::crossing::Z_BITS;
+    let (t, _) = udivmod(mul_wide(x, x), d);
+    Next::Direct {
+        m,
+        end,
+        col,
+        t: t as i32,
+        down: !left,
     }
 }
 
@@ -404,7 +452,8 @@ impl Geom {
     /// The crossing tracker at interior column `a`: the first crossing at
     /// or after it, if one comes before the edge's last column (set-up on
     /// first use: the constants, then the state, eight divisions in all;
-    /// none when the rest of the edge crosses no boundary inside).
+    /// two per crossing when at most [`DIRECT`] are left, evaluated one at
+    /// a time; none when the rest of the edge crosses no boundary inside).
     fn track(&self, cross: &mut Option<Crossings>, a: i32) -> Next {
         if !self.exact {
             return Next::Done;
@@ -419,25 +468,16 @@ impl Geom {
         };
         let m = first.max(self.b0 + 1);
         let end = self.lc1.minus(self.half(), self.e.du).boundary_ceil();
-        if m > self.last_boundary() || m >= end {
+        // The boundaries the walk needs: m up to the last one inside the
+        // edge and before the last column.
+        let end = end.min(self.last_boundary() + 1);
+        if m >= end {
             return Next::Done;
         }
-        if m + 1 == end {
-            // One crossing left: evaluated directly (two divisions), no
-            // stepping constants. x = xi or N dv - xi (below 2^32), the
-            // spill x² / D.
-            let e = &self.e;
-            let (col, xi) = e.crossing(m);
-            let ndv = u64::from(N as u32) * e.dv as u64;
-            let left = 2 * xi <= ndv;
-            let x = if left { xi } else { ndv - xi } as u32;
-            let d = mul_wide(e.du as u32, e.dv as u32) << crate::edge::crossing::Z_BITS;
-            let (t, _) = udivmod(mul_wide(x, x), d);
-            return Next::One {
-                col,
-                t: t as i32,
-                down: !left,
-            };
+        if end - m <= DIRECT {
+            // A few crossings left: evaluated directly, no stepping
+            // constants.
+            return direct(&self.e, m, end);
         }
         let k = match *cross {
             Some(k) => k,
@@ -458,7 +498,11 @@ impl Geom {
                     c.advance(k);
                 }
             }
-            (Next::One { col, .. }, _) if *col <= a => *x = Next::Done,
+            (Next::Direct { .. }, _) => {
+                while matches!(*x, Next::Direct { col, .. } if col <= a) {
+                    x.pass_direct(&self.e);
+                }
+            }
             _ => {}
         }
     }
@@ -798,7 +842,7 @@ impl EdgeWalk {
             if here {
                 // The spill: taken from the cell above the boundary, given
                 // to the one below.
-                let t = x.take_spill(&self.cross);
+                let t = x.take_spill(&g.e, &self.cross);
                 if down {
                     // Boundary bc + 1.
                     mid0 -= t;
@@ -887,7 +931,7 @@ impl EdgeWalk {
             let bc = s.b;
             match x.down_at(a, &self.cross) {
                 Some(down) => {
-                    let t = x.take_spill(&self.cross);
+                    let t = x.take_spill(&g.e, &self.cross);
                     if !down {
                         // m = bc: (m - 1, -t), (m, S + t).
                         out.put_n(
