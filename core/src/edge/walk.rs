@@ -109,11 +109,11 @@ impl Next {
     #[inline(never)]
     fn pass_direct(&mut self, e: &Canon) {
         if let Next::Direct { m, end, .. } = *self {
-            *self = if m + 1 < end {
-                direct(e, m + 1, end)
+            if m + 1 < end {
+                set_direct(self, e, m + 1, end);
             } else {
-                Next::Done
-            };
+                *self = Next::Done;
+            }
         }
     }
 }
@@ -126,24 +126,24 @@ impl Next {
 const DIRECT: i32 = 4;
 
 /// The crossing of boundary `m` of `e` (`m < end`), evaluated directly (two
-/// divisions). `x = xi` or `N dv - xi` (below `2^32`), the spill `x² / D`:
-/// the same floor the stepped tracker keeps. Out of line: the walks'
-/// column loops keep their registers.
+/// divisions), written to `x_out` in place. `x = xi` or `N dv - xi` (below
+/// `2^32`), the spill `x² / D`: the same floor the stepped tracker keeps.
+/// Out of line: the walks' column loops keep their registers.
 #[inline(never)]
-fn direct(e: &Canon, m: i32, end: i32) -> Next {
+fn set_direct(x_out: &mut Next, e: &Canon, m: i32, end: i32) {
     let (col, xi) = e.crossing(m);
     let ndv = u64::from(N as u32) * e.dv as u64;
     let left = 2 * xi <= ndv;
     let x = if left { xi } else { ndv - xi } as u32;
     let d = mul_wide(e.du as u32, e.dv as u32) << crate::edge::crossing::Z_BITS;
     let (t, _) = udivmod(mul_wide(x, x), d);
-    Next::Direct {
+    *x_out = Next::Direct {
         m,
         end,
         col,
         t: t as i32,
         down: !left,
-    }
+    };
 }
 
 /// Where a walk stopped, so that the next band's walk resumes there
@@ -454,9 +454,11 @@ impl Geom {
     /// first use: the constants, then the state, eight divisions in all;
     /// two per crossing when at most [`DIRECT`] are left, evaluated one at
     /// a time; none when the rest of the edge crosses no boundary inside).
-    fn track(&self, cross: &mut Option<Crossings>, a: i32) -> Next {
+    /// Written to `x` in place (a tracker is a few dozen words).
+    fn track(&self, cross: &mut Option<Crossings>, x: &mut Next, a: i32) {
         if !self.exact {
-            return Next::Done;
+            *x = Next::Done;
+            return;
         }
         // The first boundary whose crossing is at u >= a N, and whether it
         // comes before the last column: m N < v(a1 N). Interior columns
@@ -472,21 +474,22 @@ impl Geom {
         // edge and before the last column.
         let end = end.min(self.last_boundary() + 1);
         if m >= end {
-            return Next::Done;
+            *x = Next::Done;
+            return;
         }
         if end - m <= DIRECT {
             // A few crossings left: evaluated directly, no stepping
             // constants.
-            return direct(&self.e, m, end);
+            set_direct(x, &self.e, m, end);
+            return;
         }
-        let k = match *cross {
-            Some(k) => k,
-            None => match Crossings::new(self.e.du, self.e.dv) {
-                Some(k) => *cross.insert(k),
-                None => return Next::Done,
-            },
+        if cross.is_none() {
+            *cross = Crossings::new(self.e.du, self.e.dv);
+        }
+        *x = match cross {
+            Some(k) => Next::At(k.at(&self.e, m)),
+            None => Next::Done,
         };
-        Next::At(k.at(&self.e, m))
     }
 
     /// Moves the tracker past the crossings in columns up to `a` (an end
@@ -799,7 +802,7 @@ impl EdgeWalk {
             }
             let s = g.main_term(st, a);
             if let Next::Unset = x {
-                x = g.track(&mut self.cross, a);
+                g.track(&mut self.cross, &mut x, a);
             }
             let (here, down) = match x.down_at(a, &self.cross) {
                 Some(down) => (true, down),
@@ -926,7 +929,7 @@ impl EdgeWalk {
             let s = g.main_term(st, a);
             st = Some(s);
             if let Next::Unset = x {
-                *x = g.track(&mut self.cross, a);
+                g.track(&mut self.cross, x, a);
             }
             let bc = s.b;
             match x.down_at(a, &self.cross) {
