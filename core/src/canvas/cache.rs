@@ -226,11 +226,11 @@ impl<'a, const C: usize> WalkCache<'a, C> {
         }
     }
 
-    /// The walk in a free slot for a new entry `k`, made of `made_of`,
-    /// needed from row `row` to `last_row`: an edge's walk already there
-    /// (ended, or of an earlier frame) to be set up again in place, or
-    /// whatever else the slot held, to be replaced. `None` (a miss) when no
-    /// slot is free.
+    /// The entry of a free slot, claimed for new entry `k` made of
+    /// `made_of` and needed from row `row` to `last_row`, for the caller to
+    /// fill in place: an edge's walk already there (ended, or of an earlier
+    /// frame) is set up again over itself, anything else replaced. `None`
+    /// (a miss) when no slot is free.
     fn claim(
         &mut self,
         k: u64,
