@@ -636,8 +636,34 @@ impl crate::edge::DeltaSink for BandDeltas<'_> {
         let Some(start) = self.row(y) else {
             return;
         };
+        // The common case, a y-major edge's row inside the band: the `K`
+        // adjacent changes with one bounds check.
+        let c = x.saturating_sub(self.x0);
+        if K > 0 && (step == 1 || step == -1) {
+            let far = c.saturating_add(step * (K as i32 - 1));
+            let (lo, hi) = (c.min(far), c.max(far));
+            if lo >= 0 && hi < self.w {
+                let at = start + ROW_HEAD + lo as usize;
+                if let Some((cells, _)) = self
+                    .cover
+                    .get_mut(at..)
+                    .and_then(|r| r.split_first_chunk_mut::<K>())
+                {
+                    for (k, v) in d.into_iter().enumerate() {
+                        let e = if step == 1 {
+                            &mut cells[k]
+                        } else {
+                            &mut cells[K - 1 - k]
+                        };
+                        *e = e.wrapping_add(v);
+                    }
+                    self.widen(start, lo, hi);
+                    return;
+                }
+            }
+        }
         let (mut lo, mut hi) = (i32::MAX, i32::MIN);
-        let mut c = x.saturating_sub(self.x0);
+        let mut c = c;
         for v in d {
             let k = c.max(0);
             if k < self.w {

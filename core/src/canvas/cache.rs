@@ -17,7 +17,10 @@
 //! Slots are open-addressed by a hash of the key with a short probe;
 //! entries of edges that have ended are free for reuse.
 
-use crate::edge::{AliasedWalk, EdgeWalk};
+use core::ops::Range;
+
+use crate::band::BandBuffer;
+use crate::edge::{AliasedWalk, AreaMode, Canon, EdgeWalk};
 use crate::geom::FinePoint;
 use crate::shade::Plane;
 
@@ -117,6 +120,16 @@ fn probes(key: u64, len: usize) -> impl Iterator<Item = usize> {
     (0..PROBE.min(len)).map(move |i| if h + i >= len { h + i - len } else { h + i })
 }
 
+/// `a == b`, word by word: the array comparison becomes a `memcmp` call
+/// on the Cortex-M0, several times longer than these six words, and it
+/// runs for every edge of every shape in every band it touches.
+#[inline]
+fn same(a: &[i32; 6], b: &[i32; 6]) -> bool {
+    let d = (a[0] ^ b[0]) | (a[1] ^ b[1]) | (a[2] ^ b[2]);
+    let e = (a[3] ^ b[3]) | (a[4] ^ b[4]) | (a[5] ^ b[5]);
+    d | e == 0
+}
+
 fn edge_made_of(p0: FinePoint, p1: FinePoint, tag: i32) -> [i32; 6] {
     [p0.x, p0.y, p1.x, p1.y, tag, 0]
 }
@@ -159,7 +172,7 @@ impl<'a, const C: usize> WalkCache<'a, C> {
         probes(k, self.slots.len()).find(|&i| {
             self.slots
                 .get(i)
-                .is_some_and(|s| s.key == k && s.made_of == *made_of)
+                .is_some_and(|s| s.key == k && same(&s.made_of, made_of))
         })
     }
 
@@ -213,37 +226,27 @@ impl<'a, const C: usize> WalkCache<'a, C> {
         }
     }
 
-    /// Stores a new walk of an edge that goes on below row `row`, and lends
-    /// it back to be walked there; the walk itself when no slot is free.
-    // The walk is moved either way; an `Err` of its size costs nothing more.
-    #[allow(clippy::too_many_arguments, clippy::result_large_err)]
-    pub(crate) fn place_walk(
+    /// The entry of a free slot, claimed for new entry `k` made of
+    /// `made_of` and needed from row `row` to `last_row`, for the caller to
+    /// fill in place: an edge's walk already there (ended, or of an earlier
+    /// frame) is set up again over itself, anything else replaced. `None`
+    /// (a miss) when no slot is free.
+    fn claim(
         &mut self,
-        serial: u32,
-        edge: u32,
-        p0: FinePoint,
-        p1: FinePoint,
-        tag: i32,
+        k: u64,
+        made_of: [i32; 6],
         row: i32,
-        walk: EdgeWalk,
-    ) -> Result<&mut EdgeWalk, EdgeWalk> {
-        let last = walk.rows().end - 1;
-        let k = key(serial, Item::Edge(edge));
+        last_row: i32,
+    ) -> Option<&mut Entry<C>> {
         let Some(i) = self.free(k, row) else {
             self.misses += 1;
-            return Err(walk);
+            return None;
         };
-        let Some(s) = self.slots.get_mut(i) else {
-            return Err(walk);
-        };
+        let s = self.slots.get_mut(i)?;
         s.key = k;
-        s.made_of = edge_made_of(p0, p1, tag);
-        s.last_row = last;
-        s.entry = Entry::Walk(walk);
-        match &mut s.entry {
-            Entry::Walk(w) => Ok(w),
-            _ => Err(walk),
-        }
+        s.made_of = made_of;
+        s.last_row = last_row;
+        Some(&mut s.entry)
     }
 
     /// Like [`walk`](Self::walk), for an aliased walk.
@@ -326,4 +329,58 @@ impl<'a, const C: usize> WalkCache<'a, C> {
         let k = key(serial, Item::Plane(index));
         let _ = self.place(k, made_of, row, last_row, Entry::Plane(plane));
     }
+}
+
+/// Walks edge `edge` of shape `serial`, `p0 -> p1` in `mode`, over frame
+/// rows `rows` of `buf` (whose columns are `cols`): resumed from `cache`
+/// when it holds the edge's walk, else set up, and kept in a free slot if
+/// it goes on below `rows`.
+///
+/// A walk is a few hundred bytes, and on the Cortex-M0 a copy of one costs
+/// about as much as walking a short edge: the walk is set up where it
+/// stays (in its slot, over the ended walk there, or on the stack), never
+/// moved.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn walk_edge<const C: usize>(
+    cache: Option<&mut WalkCache<'_, C>>,
+    serial: u32,
+    edge: u32,
+    (p0, p1): (FinePoint, FinePoint),
+    mode: AreaMode,
+    cols: &Range<i32>,
+    rows: Range<i32>,
+    buf: &mut BandBuffer<'_, C>,
+) {
+    let tag = mode as i32;
+    let mut cache = cache;
+    if let Some(w) = cache
+        .as_deref_mut()
+        .and_then(|c| c.walk(serial, edge, p0, p1, tag))
+    {
+        w.walk_band(rows, buf);
+        return;
+    }
+    let Some(e) = Canon::new(p0, p1) else {
+        return;
+    };
+    // Kept only if it goes on below this band.
+    let last = EdgeWalk::rows_of(&e).end - 1;
+    if let Some(c) = cache.filter(|_| last >= rows.end) {
+        let k = key(serial, Item::Edge(edge));
+        if let Some(entry) = c.claim(k, edge_made_of(p0, p1, tag), rows.start, last) {
+            if let Entry::Walk(w) = entry {
+                *w = EdgeWalk::unclipped(e, mode, cols.start);
+            } else {
+                *entry = Entry::Walk(EdgeWalk::unclipped(e, mode, cols.start));
+            }
+            if let Entry::Walk(w) = entry {
+                w.clip(cols.clone());
+                w.walk_band(rows, buf);
+            }
+            return;
+        }
+    }
+    let mut w = EdgeWalk::unclipped(e, mode, cols.start);
+    w.clip(cols.clone());
+    w.walk_band(rows, buf);
 }

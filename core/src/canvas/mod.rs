@@ -29,7 +29,7 @@ pub use cache::{WalkCache, WalkSlot};
 use core::ops::Range;
 
 use crate::band::{BandBuffer, ComposeOp, Coverage, Paint};
-use crate::edge::{AliasedWalk, AreaMode, EdgeWalk};
+use crate::edge::{AliasedWalk, AreaMode};
 use crate::geom::{FinePoint, SubPoint, FINE_BITS};
 use crate::path::SegmentSink;
 use crate::pixel_model::{walk_bed_of_nails, walk_circular, walk_hex19, walk_hex7, CircularFilter};
@@ -115,13 +115,26 @@ impl Outline for Contour<'_> {
 
 impl Outline for [FinePoint; 3] {
     fn bounds(&self) -> Option<FineRect> {
-        FineRect::around(self.iter().copied())
+        Some(triangle_box(self))
     }
     fn segments<F: FnMut(FinePoint, FinePoint)>(&self, mut f: F) {
         let [a, b, c] = *self;
         f(a, b);
         f(b, c);
         f(c, a);
+    }
+}
+
+/// The box around a triangle's vertices ([`FineRect::around`] unrolled:
+/// every shape in every band is tested against the band with it).
+#[inline]
+fn triangle_box(v: &[FinePoint; 3]) -> FineRect {
+    let [a, b, c] = v;
+    FineRect {
+        x0: a.x.min(b.x).min(c.x),
+        y0: a.y.min(b.y).min(c.y),
+        x1: a.x.max(b.x).max(c.x),
+        y1: a.y.max(b.y).max(c.y),
     }
 }
 
@@ -571,14 +584,17 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         colors: [[u16; C]; 3],
         op: ComposeOp,
     ) -> Result<(), DrawError> {
-        for p in v {
-            if !p.in_range() {
-                return Err(DrawError::FineCoord(p));
+        // Every vertex is in range when the box's corners are (the range is
+        // a box): two tests for the shapes of every band, and the first
+        // vertex out of range looked for only when there is one.
+        let b = triangle_box(&v);
+        if !(FinePoint::new(b.x0, b.y0).in_range() && FinePoint::new(b.x1, b.y1).in_range()) {
+            for p in v {
+                if !p.in_range() {
+                    return Err(DrawError::FineCoord(p));
+                }
             }
         }
-        let Some(b) = v.bounds() else {
-            return Ok(());
-        };
         if !self.touches(&b) {
             return Ok(());
         }
@@ -703,26 +719,16 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
                 return;
             }
             match kind {
-                WalkKind::Box(mode) => {
-                    let tag = mode as i32;
-                    if let Some(w) = cache
-                        .as_deref_mut()
-                        .and_then(|c| c.walk(serial, k, p0, p1, tag))
-                    {
-                        w.walk(rows.clone(), buf);
-                    } else if let Some(mut w) = EdgeWalk::new(p0, p1, mode, cols.clone()) {
-                        // Kept only if it goes on below this band.
-                        match cache.as_deref_mut() {
-                            Some(c) if w.rows().end > rows.end => {
-                                match c.place_walk(serial, k, p0, p1, tag, rows.start, w) {
-                                    Ok(s) => s.walk(rows.clone(), buf),
-                                    Err(mut w) => w.walk(rows.clone(), buf),
-                                }
-                            }
-                            _ => w.walk(rows.clone(), buf),
-                        }
-                    }
-                }
+                WalkKind::Box(mode) => cache::walk_edge(
+                    cache.as_deref_mut(),
+                    serial,
+                    k,
+                    (p0, p1),
+                    mode,
+                    &cols,
+                    rows.clone(),
+                    buf,
+                ),
                 WalkKind::Aliased => {
                     if let Some(w) = cache
                         .as_deref_mut()

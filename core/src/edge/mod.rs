@@ -79,6 +79,7 @@ mod crossing;
 mod walk;
 
 pub use aliased::AliasedWalk;
+pub(crate) use canon::Canon;
 pub use walk::EdgeWalk;
 
 /// Which box-coverage formula the walker uses for edge pixels.

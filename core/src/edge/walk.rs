@@ -50,10 +50,17 @@ enum Next {
     Done,
     /// The next crossing at or after the walk's column.
     At(Crossing),
-    /// The last interior crossing, evaluated directly: its column, its
+    /// One of the last few interior crossings, evaluated directly:
+    /// boundary `m` (the walk needs those before `end`), its column, its
     /// spill (area units), and whether the line leaves the row there (the
     /// crossing lies right of the column centre).
-    One { col: i32, t: i32, down: bool },
+    Direct {
+        m: i32,
+        end: i32,
+        col: i32,
+        t: i32,
+        down: bool,
+    },
 }
 
 impl Next {
@@ -62,7 +69,7 @@ impl Next {
     fn col(&self) -> i32 {
         match self {
             Next::At(c) => c.col,
-            Next::One { col, .. } => *col,
+            Next::Direct { col, .. } => *col,
             Next::Done | Next::Unset => i32::MAX,
         }
     }
@@ -73,29 +80,71 @@ impl Next {
     fn down_at(&self, a: i32, cross: &Option<Crossings>) -> Option<bool> {
         match (self, cross) {
             (Next::At(c), Some(k)) if c.col == a => Some(!c.is_left(k)),
-            (Next::One { col, down, .. }, _) if *col == a => Some(*down),
+            (Next::Direct { col, down, .. }, _) if *col == a => Some(*down),
             _ => None,
         }
     }
 
     /// The spill of the crossing in column `a` (see
     /// [`down_at`](Self::down_at)), and on to the next crossing.
-    #[inline]
-    fn take_spill(&mut self, cross: &Option<Crossings>) -> i32 {
+    #[inline(always)]
+    fn take_spill(&mut self, e: &Canon, cross: &Option<Crossings>) -> i32 {
         match (&mut *self, cross) {
             (Next::At(c), Some(k)) => {
                 let t = c.spill(k);
                 c.advance(k);
                 t
             }
-            (Next::One { t, .. }, _) => {
+            (Next::Direct { t, .. }, _) => {
                 let t = *t;
-                *self = Next::Done;
+                self.pass_direct(e);
                 t
             }
             _ => 0,
         }
     }
+
+    /// Past a directly evaluated crossing: on to the next one, evaluated
+    /// directly too, or done.
+    #[inline(never)]
+    fn pass_direct(&mut self, e: &Canon) {
+        if let Next::Direct { m, end, .. } = *self {
+            if m + 1 < end {
+                set_direct(self, e, m + 1, end);
+            } else {
+                *self = Next::Done;
+            }
+        }
+    }
+}
+
+/// Most interior crossings an edge's walk evaluates directly, each with
+/// two divisions, instead of setting up the stepping (eight divisions,
+/// most of them 64-bit on the edges of more than a few pixels): short
+/// edges cross only a few boundaries (and a long one near its end). 4 and 5
+/// measure best on the Cortex-M0 benchmark's small triangles, and its
+/// medium and large ones no slower.
+const DIRECT: i32 = 4;
+
+/// The crossing of boundary `m` of `e` (`m < end`), evaluated directly (two
+/// divisions), written to `x_out` in place. `x = xi` or `N dv - xi` (below
+/// `2^32`), the spill `x² / D`: the same floor the stepped tracker keeps.
+/// Out of line: the walks' column loops keep their registers.
+#[inline(never)]
+fn set_direct(x_out: &mut Next, e: &Canon, m: i32, end: i32) {
+    let (col, xi) = e.crossing(m);
+    let ndv = u64::from(N as u32) * e.dv as u64;
+    let left = 2 * xi <= ndv;
+    let x = if left { xi } else { ndv - xi } as u32;
+    let d = mul_wide(e.du as u32, e.dv as u32) << crate::edge::crossing::Z_BITS;
+    let (t, _) = udivmod(mul_wide(x, x), d);
+    *x_out = Next::Direct {
+        m,
+        end,
+        col,
+        t: t as i32,
+        down: !left,
+    };
 }
 
 /// Where a walk stopped, so that the next band's walk resumes there
@@ -130,6 +179,18 @@ struct Resume {
 /// contours is, in every pixel, the integral of the winding number.
 #[derive(Debug, Clone, Copy)]
 pub struct EdgeWalk {
+    /// The set-up: what the walk of every band reads.
+    g: Geom,
+    /// The crossing constants, once a walk has needed them.
+    cross: Option<Crossings>,
+    /// Where the last band's walk stopped (stepped in place by the next).
+    resume: Option<Resume>,
+}
+
+/// The set-up of an [`EdgeWalk`], apart from its state (so that a walk
+/// can step its state in place while reading these).
+#[derive(Debug, Clone, Copy)]
+struct Geom {
     e: Canon,
     exact: bool,
     /// First and last major columns, first and last minor rows.
@@ -145,8 +206,6 @@ pub struct EdgeWalk {
     /// first interior column's main term follow without dividing.
     lc0: Lv,
     lc1: Lv,
-    /// The crossing constants, once a walk has needed them.
-    cross: Option<Crossings>,
     /// x-major only: the visible major columns `va..=vb` (empty when
     /// `va > vb`), the frame column covers left of them go to, and the
     /// rows whose cover columns lie left of the frame: `b0..r_in` (not
@@ -156,7 +215,6 @@ pub struct EdgeWalk {
     c_lo: i32,
     r_in: i32,
     r_out: i32,
-    resume: Option<Resume>,
 }
 
 impl EdgeWalk {
@@ -171,42 +229,68 @@ impl EdgeWalk {
         columns: Range<i32>,
     ) -> Option<Self> {
         let e = Canon::new(p0, p1)?;
+        let mut walk = Self::unclipped(e, mode, columns.start);
+        walk.clip(columns);
+        Some(walk)
+    }
+
+    /// [`new`](Self::new) of canonical edge `e`, before
+    /// [`clip`](Self::clip). Always inlined, so that the walk is built
+    /// where the caller keeps it: a walk is a few hundred bytes, and on the
+    /// Cortex-M0 a copy of it costs about as much as walking a short edge.
+    #[inline(always)]
+    pub(crate) fn unclipped(e: Canon, mode: AreaMode, c_lo: i32) -> Self {
         let (a0, a1) = e.columns();
         let (b0, b1) = e.rows();
         // ONE dv <= 2^38; in 32 bits for edges of dv < 2^16.
         let (q, rr) = udivmod((e.dv as u64) << COVER_BITS, e.du as u64);
-        let mut walk = Self {
-            e,
-            exact: mode == AreaMode::Exact,
-            a0,
-            a1,
-            b0,
-            b1,
-            q: q as i32,
-            rr: rr as i32,
-            lc0: e.line_near_end(a0 * N + N / 2, false),
-            lc1: e.line_near_end(a1 * N + N / 2, true),
+        Self {
+            g: Geom {
+                e,
+                exact: mode == AreaMode::Exact,
+                a0,
+                a1,
+                b0,
+                b1,
+                q: q as i32,
+                rr: rr as i32,
+                lc0: e.line_near_end(a0 * N + N / 2, false),
+                lc1: e.line_near_end(a1 * N + N / 2, true),
+                va: 0,
+                vb: -1,
+                c_lo,
+                r_in: b0,
+                r_out: b1 + 1,
+            },
             cross: None,
-            va: 0,
-            vb: -1,
-            c_lo: columns.start,
-            r_in: b0,
-            r_out: b1 + 1,
             resume: None,
-        };
-        if !e.transposed {
-            walk.clip_columns(columns);
         }
-        Some(walk)
+    }
+
+    /// The set-up's last step: which columns of an x-major edge are
+    /// visible in frame columns `columns` (those given to
+    /// [`unclipped`](Self::unclipped) as `c_lo..`).
+    #[inline(always)]
+    pub(crate) fn clip(&mut self, columns: Range<i32>) {
+        if !self.g.e.transposed {
+            self.g.clip_columns(columns);
+        }
+    }
+
+    /// The frame rows canonical edge `e` touches: [`rows`](Self::rows) of
+    /// its walk, known before the set-up.
+    #[inline]
+    pub(crate) fn rows_of(e: &Canon) -> Range<i32> {
+        let (a0, a1) = if e.transposed { e.columns() } else { e.rows() };
+        a0..a1 + 1
     }
 
     /// The frame rows the edge touches.
+    // The canvas asks `rows_of` before the set-up; this is for the
+    // `internals` API.
+    #[cfg_attr(not(feature = "internals"), allow(dead_code))]
     pub fn rows(&self) -> Range<i32> {
-        if self.e.transposed {
-            self.a0..self.a1 + 1
-        } else {
-            self.b0..self.b1 + 1
-        }
+        Self::rows_of(&self.g.e)
     }
 
     /// Reports the edge's pixels in frame rows `rows` to `sink`.
@@ -232,15 +316,17 @@ impl EdgeWalk {
         if rows.start >= rows.end {
             return;
         }
-        if self.e.transposed {
+        if self.g.e.transposed {
             self.y_major(rows, out);
-        } else if self.e.mirrored {
+        } else if self.g.e.mirrored {
             self.x_major::<S, true>(rows, out);
         } else {
             self.x_major::<S, false>(rows, out);
         }
     }
+}
 
+impl Geom {
     // ---- set-up ------------------------------------------------------------
 
     /// x-major: which major columns are visible, and the rows whose covers
@@ -367,10 +453,13 @@ impl EdgeWalk {
     /// The crossing tracker at interior column `a`: the first crossing at
     /// or after it, if one comes before the edge's last column (set-up on
     /// first use: the constants, then the state, eight divisions in all;
-    /// none when the rest of the edge crosses no boundary inside).
-    fn track(&mut self, a: i32) -> Next {
+    /// two per crossing when at most [`DIRECT`] are left, evaluated one at
+    /// a time; none when the rest of the edge crosses no boundary inside).
+    /// Written to `x` in place (a tracker is a few dozen words).
+    fn track(&self, cross: &mut Option<Crossings>, x: &mut Next, a: i32) {
         if !self.exact {
-            return Next::Done;
+            *x = Next::Done;
+            return;
         }
         // The first boundary whose crossing is at u >= a N, and whether it
         // comes before the last column: m N < v(a1 N). Interior columns
@@ -382,46 +471,42 @@ impl EdgeWalk {
         };
         let m = first.max(self.b0 + 1);
         let end = self.lc1.minus(self.half(), self.e.du).boundary_ceil();
-        if m > self.last_boundary() || m >= end {
-            return Next::Done;
+        // The boundaries the walk needs: m up to the last one inside the
+        // edge and before the last column.
+        let end = end.min(self.last_boundary() + 1);
+        if m >= end {
+            *x = Next::Done;
+            return;
         }
-        if m + 1 == end {
-            // One crossing left: evaluated directly (two divisions), no
-            // stepping constants. x = xi or N dv - xi (below 2^32), the
-            // spill x² / D.
-            let e = &self.e;
-            let (col, xi) = e.crossing(m);
-            let ndv = u64::from(N as u32) * e.dv as u64;
-            let left = 2 * xi <= ndv;
-            let x = if left { xi } else { ndv - xi } as u32;
-            let d = mul_wide(e.du as u32, e.dv as u32) << crate::edge::crossing::Z_BITS;
-            let (t, _) = udivmod(mul_wide(x, x), d);
-            return Next::One {
-                col,
-                t: t as i32,
-                down: !left,
-            };
+        if end - m <= DIRECT {
+            // A few crossings left: evaluated directly, no stepping
+            // constants.
+            set_direct(x, &self.e, m, end);
+            return;
         }
-        let k = match self.cross {
-            Some(k) => k,
-            None => match Crossings::new(self.e.du, self.e.dv) {
-                Some(k) => *self.cross.insert(k),
-                None => return Next::Done,
-            },
+        if cross.is_none() {
+            *cross = Crossings::new(self.e.du, self.e.dv);
+        }
+        *x = match cross {
+            Some(k) => Next::At(k.at(&self.e, m)),
+            None => Next::Done,
         };
-        Next::At(k.at(&self.e, m))
     }
 
     /// Moves the tracker past the crossings in columns up to `a` (an end
     /// column: its crossings are in its direct areas).
-    fn skip_crossings(&self, x: &mut Next, a: i32) {
-        match (&mut *x, &self.cross) {
+    fn skip_crossings(&self, cross: &Option<Crossings>, x: &mut Next, a: i32) {
+        match (&mut *x, cross) {
             (Next::At(c), Some(k)) => {
                 while c.col <= a && c.m <= self.last_boundary() {
                     c.advance(k);
                 }
             }
-            (Next::One { col, .. }, _) if *col <= a => *x = Next::Done,
+            (Next::Direct { .. }, _) => {
+                while matches!(*x, Next::Direct { col, .. } if col <= a) {
+                    x.pass_direct(&self.e);
+                }
+            }
             _ => {}
         }
     }
@@ -537,6 +622,34 @@ impl EdgeWalk {
         c.min(self.b1).max(self.b0)
     }
 
+    /// The state at which band `y0`'s walk starts, evaluated directly
+    /// (divides).
+    fn x_start(&self, y0: i32) -> Resume {
+        let col = if y0 <= self.b0 {
+            self.a0
+        } else {
+            // The column holding the crossing of the band's top boundary.
+            self.e.crossing(y0).0
+        };
+        let a = col.max(self.va);
+        let prev = if a == self.a0 {
+            self.b0
+        } else {
+            (y0 - 1)
+                .max(self.b0)
+                .max(if self.e.mirrored { self.b0 } else { self.r_in })
+        };
+        Resume {
+            row: y0,
+            a,
+            prev,
+            st: None,
+            x: if self.exact { Next::Unset } else { Next::Done },
+        }
+    }
+}
+
+impl EdgeWalk {
     // ---- the two walks -----------------------------------------------------
 
     /// Edges at most 45° from horizontal: major columns are frame columns
@@ -549,68 +662,78 @@ impl EdgeWalk {
     /// `(a, b)` of canonical area `S` is `+w S` at `pos(a)` and `-w S` at
     /// `pos(a + 1)`, a cover `h` from column `a` on is `+w h` at `pos(a)`.
     fn x_major<S: DeltaSink, const MIRRORED: bool>(&mut self, rows: Range<i32>, mut out: S) {
+        let g = &self.g;
         let (y0, y1) = (rows.start, rows.end);
-        let (b0, b1) = (self.b0, self.b1);
+        let (b0, b1) = (g.b0, g.b1);
         let lo = y0.max(b0);
         let hi = y1.min(b1 + 1);
         if lo >= hi {
             return;
         }
-        let w = i32::from(self.e.dir);
+        let w = i32::from(g.e.dir);
         let pos = |a: i32| if MIRRORED { a.saturating_neg() } else { a };
         let step_x = if MIRRORED { -1 } else { 1 };
         // Rows whose covers lie left of the frame: straight to c_lo.
         let left = if MIRRORED {
-            self.r_out..b1 + 1
+            g.r_out..b1 + 1
         } else {
-            b0..self.r_in
+            b0..g.r_in
         };
         for row in lo.max(left.start)..hi.min(left.end) {
-            out.put(self.c_lo, row, w * self.row_cover(row));
+            out.put(g.c_lo, row, w * g.row_cover(row));
         }
         // Where the walk starts: where the last band stopped, or directly
         // at the column holding the crossing of this band's top boundary.
-        let start = match self.resume.take() {
-            Some(r) if r.row == y0 => r,
-            _ => self.x_start(y0),
+        let (mut a, mut prev, mut st, mut x) = match &self.resume {
+            Some(r) if r.row == y0 => (r.a, r.prev, r.st, r.x),
+            _ => {
+                let r = g.x_start(y0);
+                (r.a, r.prev, r.st, r.x)
+            }
         };
-        let (mut a, mut prev, mut st, mut x) = (start.a, start.prev, start.st, start.x);
-        let mut next: Option<Resume> = None;
+        // Whether the state the next band starts from is stored yet: it is
+        // written in place when the walk reaches it (a resume is a few
+        // dozen words, and each copy of one costs on the Cortex-M0).
+        let mut next = false;
         // What the last column walked left to add at `pos(a)` of its main
         // row (the `-S` of its main cell, and of a spill there): the row
         // and the canonical value.
         let mut pend: Option<(i32, i32)> = None;
         loop {
-            if a > self.vb {
+            if a > g.vb {
                 if let Some((pb, pv)) = pend.take() {
                     out.put(pos(a), pb, w * pv);
                 }
-                if a > self.a1 && self.vb == self.a1 {
+                if a > g.a1 && g.vb == g.a1 {
                     // Past the end: the last rows' covers right of it.
-                    let col = pos(self.a1 + 1);
+                    let col = pos(g.a1 + 1);
                     for row in prev.max(lo)..=b1.min(hi - 1) {
-                        out.put(col, row, w * self.row_cover(row));
+                        out.put(col, row, w * g.row_cover(row));
                     }
                 }
                 // Nothing more to walk from here, unless a column already
                 // walked reaches into the next band.
-                next = next.or(Some(Resume {
-                    row: y1,
-                    a,
-                    prev,
-                    st: None,
-                    x: Next::Done,
-                }));
+                if !next {
+                    next = true;
+                    self.resume = Some(Resume {
+                        row: y1,
+                        a,
+                        prev,
+                        st: None,
+                        x: Next::Done,
+                    });
+                }
                 break;
             }
-            let is_end = a == self.a0 || a == self.a1;
+            let is_end = a == g.a0 || a == g.a1;
             if is_end {
                 if let Some((pb, pv)) = pend.take() {
                     out.put(pos(a), pb, w * pv);
                 }
-                let bc = self.centre_cell(a);
-                if next.is_none() && self.end_last_cell(a) >= y1 {
-                    next = Some(Resume {
+                let bc = g.centre_cell(a);
+                if !next && g.end_last_cell(a) >= y1 {
+                    next = true;
+                    self.resume = Some(Resume {
                         row: y1,
                         a,
                         prev,
@@ -619,11 +742,11 @@ impl EdgeWalk {
                     });
                 }
                 let (pa, pa1) = (pos(a), pos(a + 1));
-                self.end_cells(a, bc, |b, v| out.put2(pa, pa1, b, w * v, -w * v));
+                g.end_cells(a, bc, |b, v| out.put2(pa, pa1, b, w * v, -w * v));
                 // Crossings inside an end column are in its direct areas.
-                self.skip_crossings(&mut x, a);
+                g.skip_crossings(&self.cross, &mut x, a);
                 for row in prev.max(lo)..bc.min(hi) {
-                    out.put(pa, row, w * self.row_cover(row));
+                    out.put(pa, row, w * g.row_cover(row));
                 }
                 prev = prev.max(bc);
                 st = None;
@@ -640,13 +763,13 @@ impl EdgeWalk {
                         Next::Unset => a,
                         x => x.col(),
                     };
-                    let stop = x_col.min(self.a1).min(self.vb.saturating_add(1));
+                    let stop = x_col.min(g.a1).min(g.vb.saturating_add(1));
                     if stop > a {
                         let (mut ss, mut r) = (s.s, s.r);
                         // The first change also takes what the last column
                         // left (0 after a plain one).
                         let mut carry = pv + s.s;
-                        let (q, rr, du, h) = (self.q, self.rr, self.e.du, s.h);
+                        let (q, rr, du, h) = (g.q, g.rr, g.e.du, s.h);
                         let done = out.run(pos(a), s.b, step_x, stop - a, || {
                             let mut d = q;
                             let mut r2 = r + rr;
@@ -678,19 +801,20 @@ impl EdgeWalk {
                     }
                 }
             }
-            let s = self.main_term(st, a);
+            let s = g.main_term(st, a);
             if let Next::Unset = x {
-                x = self.track(a);
+                g.track(&mut self.cross, &mut x, a);
             }
             let (here, down) = match x.down_at(a, &self.cross) {
                 Some(down) => (true, down),
                 None => (false, false),
             };
             let bc = s.b;
-            if next.is_none() && bc + i32::from(down) >= y1 {
+            if !next && bc + i32::from(down) >= y1 {
                 // The first column reaching below this band: the next band
                 // starts here.
-                next = Some(Resume {
+                next = true;
+                self.resume = Some(Resume {
                     row: y1,
                     a,
                     prev,
@@ -714,15 +838,15 @@ impl EdgeWalk {
             }
             for row in prev..bc {
                 if row == bc - 1 {
-                    up0 += self.row_cover(row);
+                    up0 += g.row_cover(row);
                 } else if row >= lo && row < hi {
-                    out.put(pa, row, w * self.row_cover(row));
+                    out.put(pa, row, w * g.row_cover(row));
                 }
             }
             if here {
                 // The spill: taken from the cell above the boundary, given
                 // to the one below.
-                let t = x.take_spill(&self.cross);
+                let t = x.take_spill(&g.e, &self.cross);
                 if down {
                     // Boundary bc + 1.
                     mid0 -= t;
@@ -752,32 +876,8 @@ impl EdgeWalk {
             }
             a += 1;
         }
-        self.resume = next;
-    }
-
-    /// The state at which band `y0`'s walk starts, evaluated directly
-    /// (divides).
-    fn x_start(&self, y0: i32) -> Resume {
-        let col = if y0 <= self.b0 {
-            self.a0
-        } else {
-            // The column holding the crossing of the band's top boundary.
-            self.e.crossing(y0).0
-        };
-        let a = col.max(self.va);
-        let prev = if a == self.a0 {
-            self.b0
-        } else {
-            (y0 - 1)
-                .max(self.b0)
-                .max(if self.e.mirrored { self.b0 } else { self.r_in })
-        };
-        Resume {
-            row: y0,
-            a,
-            prev,
-            st: None,
-            x: if self.exact { Next::Unset } else { Next::Done },
+        if !next {
+            self.resume = None;
         }
     }
 
@@ -789,40 +889,53 @@ impl EdgeWalk {
     /// `mpos(b)` and `+w S` at `mpos(b + 1)` of row `a`, the row's cover
     /// `+w h` at `mpos(bc)`.
     fn y_major<S: DeltaSink>(&mut self, rows: Range<i32>, mut out: S) {
-        let lo = rows.start.max(self.a0);
-        let hi = rows.end.min(self.a1 + 1);
+        let g = &self.g;
+        let lo = rows.start.max(g.a0);
+        let hi = rows.end.min(g.a1 + 1);
         if lo >= hi {
             return;
         }
-        let w = i32::from(self.e.dir);
-        let mirrored = self.e.mirrored;
+        let w = i32::from(g.e.dir);
+        let mirrored = g.e.mirrored;
         let mpos = |b: i32| if mirrored { b.saturating_neg() } else { b };
         let step_x = if mirrored { -1 } else { 1 };
-        let (mut st, mut x) = match self.resume.take() {
-            Some(r) if r.a == lo => (r.st, r.x),
-            _ => (None, if self.exact { Next::Unset } else { Next::Done }),
+        // The state is stepped where it is kept (a start is written over a
+        // stale one): a copy in and out would cost as much as a few rows.
+        if !matches!(&self.resume, Some(r) if r.a == lo) {
+            self.resume = Some(Resume {
+                row: lo,
+                a: lo,
+                prev: 0,
+                st: None,
+                x: if g.exact { Next::Unset } else { Next::Done },
+            });
+        }
+        let Some(r) = self.resume.as_mut() else {
+            return;
         };
+        let x = &mut r.x;
+        let mut st = r.st;
         for a in lo..hi {
-            if a == self.a0 || a == self.a1 {
+            if a == g.a0 || a == g.a1 {
                 st = None;
-                let bc = self.centre_cell(a);
-                self.end_cells(a, bc, |b, v| {
+                let bc = g.centre_cell(a);
+                g.end_cells(a, bc, |b, v| {
                     out.put(mpos(b), a, -w * v);
                     out.put(mpos(b + 1), a, w * v);
                 });
-                self.skip_crossings(&mut x, a);
-                out.put(mpos(bc), a, w * self.column_cover(a));
+                g.skip_crossings(&self.cross, x, a);
+                out.put(mpos(bc), a, w * g.column_cover(a));
                 continue;
             }
-            let s = self.main_term(st, a);
+            let s = g.main_term(st, a);
             st = Some(s);
             if let Next::Unset = x {
-                x = self.track(a);
+                g.track(&mut self.cross, x, a);
             }
             let bc = s.b;
             match x.down_at(a, &self.cross) {
                 Some(down) => {
-                    let t = x.take_spill(&self.cross);
+                    let t = x.take_spill(&g.e, &self.cross);
                     if !down {
                         // m = bc: (m - 1, -t), (m, S + t).
                         out.put_n(
@@ -844,13 +957,7 @@ impl EdgeWalk {
                 None => out.put_n(mpos(bc), a, step_x, [w * (ONE - s.s), w * s.s]),
             }
         }
-        self.resume = Some(Resume {
-            row: hi,
-            a: hi,
-            prev: 0,
-            st,
-            x,
-        });
+        (r.row, r.a, r.prev, r.st) = (hi, hi, 0, st);
     }
 }
 
