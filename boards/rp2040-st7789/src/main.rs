@@ -74,12 +74,14 @@ const SPI_HZ: u32 = 62_500_000;
 /// Panel size.
 const W: u16 = 240;
 const H: u16 = 240;
-/// Rows per band. Per band, every shape that reaches it is set up again
-/// (its outline flattened and offset), and on the Cortex-M0 that set-up,
-/// not the pixels, is most of a frame: this panel costs 134 M
-/// instructions a frame in 16-row bands and 78 M in 40-row ones
-/// (boards/README.md). 40 rows divide the panel into 6 bands; their
-/// buffers take 153 920 bytes, 58 % of the RP2040's 264 KiB.
+/// Rows per band. Per band, every shape that reaches it is described
+/// again (its curves' vertices computed where they meet the band) and its
+/// edges there set up or resumed, and on the Cortex-M0 that, more than
+/// the pixels, is what a frame costs: this panel costs 33.6 M
+/// instructions a whole frame in 16-row bands and 23.7 M in 40-row ones,
+/// a partial redraw 11.1 M and 7.8 M (`bench-m0`, boards/README.md). 40
+/// rows divide the panel into 6 bands; their buffers take 154 240 bytes,
+/// 58 % of the RP2040's 264 KiB.
 const BAND_ROWS: u16 = 40;
 /// `i32`s of the accumulation buffer: 240 x 40 pixels x 3 channels.
 const ACC_LEN: usize = BandBuffer::<3>::acc_len(W, BAND_ROWS);
