@@ -73,7 +73,9 @@ pub trait SegmentSink {
     }
 
     /// `n` segments were left out: each lies wholly outside the
-    /// [`window`](Self::window), or had zero length. For sinks that number
+    /// [`window`](Self::window), had zero length, or was dropped by a
+    /// filter on the way (a [`BandFilter`](crate::path::BandFilter)'s
+    /// horizontal ones). For sinks that number
     /// their segments (a band's walks are cached by their place in the
     /// outline): the numbering stays the same whichever segments are left
     /// out. The default ignores it.
