@@ -167,6 +167,7 @@ impl<S: Shape + ?Sized> Outline for Stroked<'_, '_, S> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::path::testing::Lcg;
     use crate::path::{
         Arc, Circle, CornerRadii, Degrees, Ellipse, LineCap, Rectangle, RoundedRectangle, Sector,
     };
@@ -206,13 +207,8 @@ mod tests {
     fn every_point_of_a_shape_lies_in_its_bounds() {
         // Small radii most of all: there the area-preserving polygons'
         // vertices stand out of the curve by a few fine units.
-        let mut seed = 0x1f2e_3d4c_5b6a_7988u64;
-        let mut next = |m: u32| {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((seed >> 33) % u64::from(m)) as u32
-        };
+        let mut rng = Lcg(0x1f2e_3d4c_5b6a_7988);
+        let mut next = |m: u32| rng.below(u64::from(m)) as u32;
         for case in 0..3000 {
             let c = FinePoint::new(50_000 + next(4096) as i32, 50_000 + next(4096) as i32);
             let r = 1 + (next(40_000) >> next(12));

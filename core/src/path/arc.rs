@@ -499,24 +499,9 @@ pub(crate) fn arc_points<O: Vertices + ?Sized>(
     let sweep = sweep.clamp(-TURN, TURN);
     let p0 = frame.point(t0, Q30);
     out.vertex(p0);
-    if sweep == 0 {
-        return;
+    if sweep != 0 {
+        arc_vertices(frame, t0, sweep, tol, p0, true, out);
     }
-    let m = arc_count(frame.major(), sweep, tol);
-    let mut ts = RoundedMultiples::new(sweep, i64::from(m));
-    ts.next();
-    if m < 2 {
-        out.vertex(frame.point(t0 + sweep, Q30));
-        return;
-    }
-    let g = arc_scale(m, sweep / i64::from(m));
-    let slack = piece_slack(frame, sweep / i64::from(m) * i64::from(PIECE));
-    // The inner vertices scaled by g, the last one (`ts` gives exactly
-    // `sweep` at m) on the curve.
-    let estimate = YEstimate::new(frame, t0, g);
-    send_vertices(out, p0, m, ts, slack, estimate, |i, t| {
-        frame.point(t0 + t, if i == m { Q30 } else { g })
-    });
 }
 
 /// The `m - 1` inner vertices of [`arc_points`]' polygon (none for a
@@ -534,8 +519,29 @@ pub(crate) fn arc_inner_vertices<O: Vertices + ?Sized>(
     out: &mut O,
 ) {
     let sweep = sweep.clamp(-TURN, TURN);
+    if sweep != 0 {
+        arc_vertices(frame, t0, sweep, tol, p0, false, out);
+    }
+}
+
+/// The vertices after `p0` of the area-preserving polygon of an arc from
+/// `t0` over `sweep` (non-zero, within a turn): the `m - 1` inner ones,
+/// scaled by `g`, and with `end` the last one, on the curve (`ts` gives
+/// exactly `sweep` at `m`).
+fn arc_vertices<O: Vertices + ?Sized>(
+    frame: &EllipseFrame,
+    t0: i64,
+    sweep: i64,
+    tol: Tolerance,
+    p0: Pt,
+    end: bool,
+    out: &mut O,
+) {
     let m = arc_count(frame.major(), sweep, tol);
-    if m < 2 || sweep == 0 {
+    if m < 2 {
+        if end {
+            out.vertex(frame.point(t0 + sweep, Q30));
+        }
         return;
     }
     let g = arc_scale(m, sweep / i64::from(m));
@@ -543,8 +549,9 @@ pub(crate) fn arc_inner_vertices<O: Vertices + ?Sized>(
     ts.next();
     let slack = piece_slack(frame, sweep / i64::from(m) * i64::from(PIECE));
     let estimate = YEstimate::new(frame, t0, g);
-    send_vertices(out, p0, m - 1, ts, slack, estimate, |_, t| {
-        frame.point(t0 + t, g)
+    let n = if end { m } else { m - 1 };
+    send_vertices(out, p0, n, ts, slack, estimate, |i, t| {
+        frame.point(t0 + t, if i == m { Q30 } else { g })
     });
 }
 
@@ -694,12 +701,10 @@ mod tests {
 
     #[test]
     fn scale_q30_is_the_64_bit_floor() {
-        let mut seed = 0x1234_5678_9abc_def1u64;
+        let mut rng = Lcg(0x1234_5678_9abc_def1);
         let edges = [0, 1, (1 << 31) - 1, 1 << 31];
         for _ in 0..100_000 {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
+            let seed = rng.next_u64();
             let a = (seed >> 33) as i64;
             let x = ((seed as u32) as i32) as i64;
             assert_eq!(scale_q30(a, x), (a * x) >> 30, "{a} {x}");
@@ -731,14 +736,12 @@ mod tests {
 
     #[test]
     fn arc_scale_in_64_bits_is_the_128_bit_form() {
-        let mut seed = 0x51ed_270b_6f2a_93c5u64;
+        let mut rng = Lcg(0x51ed_270b_6f2a_93c5);
         for m in 2..=MAX_ARC_SEGMENTS {
             // The steps arcs give (a sweep up to a turn in m steps of at
             // most an eighth), and random ones.
             for k in 0..12 {
-                seed = seed
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
+                let seed = rng.next_u64();
                 let step = match k {
                     0 => 1 << 29,
                     1 => 1,
@@ -758,11 +761,9 @@ mod tests {
 
     #[test]
     fn rounded_multiples_are_the_rounded_quotients() {
-        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut rng = Lcg(0x2545_f491_4f6c_dd1d);
         for case in 0..2000 {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
+            let seed = rng.next_u64();
             let step = match case % 4 {
                 0 => TURN,
                 1 => -TURN,
@@ -793,6 +794,7 @@ mod tests {
         }
     }
     use super::*;
+    use crate::path::testing::Lcg;
 
     #[test]
     fn counts_follow_the_stated_rules() {
@@ -894,13 +896,8 @@ mod tests {
 
     #[test]
     fn the_y_estimate_is_within_its_error_of_the_vertex() {
-        let mut seed = 0x0123_4567_89ab_cdefu64;
-        let mut next = |m: u64| {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 33) % m
-        };
+        let mut rng = Lcg(0x0123_4567_89ab_cdef);
+        let mut next = |m: u64| rng.below(m);
         let mut worst = 0f64;
         for case in 0..20_000 {
             let a = (next(u64::from(MAX_RADIUS)) as u32) >> (next(16) as u32);
@@ -932,13 +929,8 @@ mod tests {
         // Random ellipses, circles, arcs and windows of 1 to 40 rows near
         // them: the segments that meet the window, and their numbers, are
         // those of the polygon computed whole; so is the count.
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = |m: u64| {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 33) % m
-        };
+        let mut rng = Lcg(0x9e37_79b9_7f4a_7c15);
+        let mut next = |m: u64| rng.below(m);
         let mut jumped = 0;
         for case in 0..3000 {
             let r = 256 + next(300 * 1024) as i64;

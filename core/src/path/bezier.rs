@@ -245,6 +245,7 @@ pub(crate) fn turn_count(turn: u64, h: i64, tol: i64) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::path::testing::Lcg;
 
     fn pts<const N: usize>(c: [(i64, i64); N]) -> [Pt; N] {
         c.map(|(x, y)| Pt::new(x, y))
@@ -287,13 +288,8 @@ mod tests {
 
     #[test]
     fn the_short_forms_give_the_wide_forms_bits() {
-        let mut seed = 0x9a3f_0c11_77d2_5e01u64;
-        let mut next = |m: u64| {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 20) % m
-        };
+        let mut rng = Lcg(0x9a3f_0c11_77d2_5e01);
+        let mut next = |m: u64| (rng.next_u64() >> 20) % m;
         for case in 0..20_000 {
             // Spans around the 32-bit forms' limits, and the whole range.
             let span = [1 << 10, (1 << 15) - 1, 1 << 15, 1 << 16, 1 << 32][case % 5];

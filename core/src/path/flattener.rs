@@ -137,6 +137,7 @@ impl<S: SegmentSink + ?Sized> PathSink for Flattener<'_, S> {
 mod tests {
     extern crate std;
     use super::*;
+    use crate::path::testing::Lcg;
 
     #[derive(Default)]
     struct Sum {
@@ -175,13 +176,8 @@ mod tests {
 
     #[test]
     fn curves_outside_the_window_leave_out_only_segments_outside_it() {
-        let mut seed = 0x2f6b_3a9c_11d4_e807u64;
-        let mut next = |m: i64| {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((seed >> 33) % m as u64) as i64
-        };
+        let mut rng = Lcg(0x2f6b_3a9c_11d4_e807);
+        let mut next = |m: i64| rng.below(m as u64) as i64;
         let mut jumped = 0;
         for case in 0..2000 {
             let mut pts = [FinePoint::default(); 10];

@@ -188,11 +188,33 @@ impl Default for Tolerance {
     }
 }
 
-/// Sinks for the unit tests: what a description sent, summed.
+/// Sinks for the unit tests: what a description sent, summed; and the
+/// random numbers they draw.
 #[cfg(test)]
 pub(crate) mod testing {
     use super::SegmentSink;
     use crate::geom::FinePoint;
+
+    /// The 64-bit linear congruential generator the unit tests draw from
+    /// (Knuth's MMIX constants): the same stream wherever it is seeded
+    /// alike.
+    pub struct Lcg(pub u64);
+
+    impl Lcg {
+        /// The next state.
+        pub fn next_u64(&mut self) -> u64 {
+            self.0 = self
+                .0
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            self.0
+        }
+
+        /// A number below `m` (`m > 0`) from the next state's top 31 bits.
+        pub fn below(&mut self, m: u64) -> u64 {
+            (self.next_u64() >> 33) % m
+        }
+    }
 
     /// Twice the signed area, the segment count and the balance of ends.
     #[derive(Debug, Default)]

@@ -210,12 +210,10 @@ mod tests {
     fn the_bit_conversion_is_the_float_cast() {
         // Every exponent with several mantissas and both signs, and the
         // special values, against `(v * 64.0) as i32`.
-        let mut seed = 0x3c6e_f372_fe94_f82au64;
+        let mut rng = crate::path::testing::Lcg(0x3c6e_f372_fe94_f82a);
         for exp in 0u32..=255 {
             for k in 0..64 {
-                seed = seed
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
+                let seed = rng.next_u64();
                 let mant = match k {
                     0 => 0,
                     1 => 1,

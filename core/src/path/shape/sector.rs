@@ -483,7 +483,7 @@ impl SectorRing {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::path::testing::Tally;
+    use crate::path::testing::{Lcg, Tally};
 
     /// The area of an arc's stroke with caps, exactly: the annular sector
     /// between `r - h` and `r + h` over `s` radians and its two caps.
@@ -498,13 +498,8 @@ mod tests {
 
     #[test]
     fn capped_arc_strokes_have_the_exact_area() {
-        let mut seed = 0x7a3c_55e1_0b9d_2f41u64;
-        let mut next = |m: u64| {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 33) % m
-        };
+        let mut rng = Lcg(0x7a3c_55e1_0b9d_2f41);
+        let mut next = |m: u64| rng.below(m);
         for case in 0..400 {
             let r_px = 4.0 + next(200) as f64;
             let w_fine = 512 + next((r_px * 1.6 * 1024.0) as u64) as u32;
