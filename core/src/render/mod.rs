@@ -307,7 +307,7 @@ where
     );
     let uniform = profile.uniform(buf.background());
     let parts = buf.flush_parts();
-    let pixels = BandPixels {
+    let mut rows = Segments {
         acc: parts.acc,
         extents: parts.extents,
         bg: parts.background,
@@ -319,9 +319,13 @@ where
         rows_left: band.rows,
         // A row is to start.
         col: band.width,
-        left: 0,
-        seg: None,
         dirty: 0..0,
+    };
+    let pixels = BandPixels {
+        seg: &mut [],
+        left: 0,
+        x: band.x0,
+        rows: &mut rows,
     };
     target.fill_contiguous(&area, pixels)
 }
@@ -332,11 +336,37 @@ where
 /// A row is up to three segments: columns nothing was drawn on left and
 /// right of its drawn extent, sent as the background's colour when the
 /// profile has one for every position (their accumulator already holds the
-/// background), and the drawn extent, resolved pixel by pixel. Per pixel a
-/// count down and a test of the segment's kind; segment changes are the
-/// slow path.
-struct BandPixels<'x, P: Profile<C>, const C: usize> {
-    /// The pixels not passed yet (rows are contiguous).
+/// background), and the drawn extent, resolved pixel by pixel. A pixel
+/// segment is its own count (the slice of its accumulator not sent yet),
+/// a uniform one a count down. Finding the next segment is the slow path,
+/// out of line and on its own state ([`Segments`]): the per-pixel state
+/// here never has its address taken, so the compiler keeps it in
+/// registers (the Cortex-M0 has eight low ones).
+struct BandPixels<'r, 'x, P: Profile<C>, const C: usize> {
+    /// The current pixel segment's accumulator not sent yet (empty in a
+    /// uniform segment).
+    seg: &'x mut [i32],
+    /// Pixels left in the current uniform segment (0 in a pixel segment).
+    left: u32,
+    /// Frame column of `seg`'s first pixel.
+    x: i32,
+    /// The band's segments after the current one (a local of [`send`]'s,
+    /// by reference: its address is taken by the slow path).
+    rows: &'r mut Segments<'x, P, C>,
+}
+
+/// One segment of a band row: its accumulator (pixels to resolve) or a
+/// count of uniform pixels, and the frame column it starts at.
+struct Segment<'x> {
+    acc: &'x mut [i32],
+    uniform: u32,
+    x: i32,
+}
+
+/// The band's rows cut into segments (see [`BandPixels`]).
+struct Segments<'x, P: Profile<C>, const C: usize> {
+    /// The band's accumulator after the current segment (rows are
+    /// contiguous).
     acc: &'x mut [i32],
     /// Per row, the drawn extent (see [`BandBuffer::flush_parts`]).
     extents: crate::band::DrawnExtents<'x>,
@@ -348,25 +378,22 @@ struct BandPixels<'x, P: Profile<C>, const C: usize> {
     y: i32,
     width: u16,
     rows_left: u16,
-    /// Column of the next segment (pixel segments: of the next pixel),
-    /// and the pixels left in the current segment.
+    /// Band column where the next segment starts.
     col: u16,
-    left: u32,
-    /// The current segment's colour if it is one of the background, `None`
-    /// if its pixels are resolved.
-    seg: Option<P::Color>,
     /// Drawn columns of the current row.
     dirty: core::ops::Range<u16>,
 }
 
-impl<P: Profile<C>, const C: usize> BandPixels<'_, P, C> {
-    /// Moves to the next segment (and row); `false` at the band's end.
+impl<'x, P: Profile<C>, const C: usize> Segments<'x, P, C> {
+    /// The next non-empty segment (moving to the next row when the row is
+    /// done); `None` at the band's end.
     #[cold]
-    fn next_segment(&mut self) -> bool {
+    #[inline(never)]
+    fn next_segment(&mut self) -> Option<Segment<'x>> {
         loop {
             if self.col >= self.width {
                 if self.rows_left == 0 {
-                    return false;
+                    return None;
                 }
                 self.rows_left -= 1;
                 self.y += 1;
@@ -390,54 +417,55 @@ impl<P: Profile<C>, const C: usize> BandPixels<'_, P, C> {
                 (false, self.width)
             };
             let n = end.saturating_sub(self.col);
-            match (pixels, self.uniform) {
-                (false, Some(u)) => {
-                    // Skip those pixels' accumulator: it holds the
-                    // background.
-                    let acc = core::mem::take(&mut self.acc);
-                    self.acc = acc.get_mut(usize::from(n) * C..).unwrap_or_default();
-                    self.seg = Some(u);
-                    // A uniform segment's pixels need no column.
-                    self.col = end;
-                }
-                _ => self.seg = None,
-            }
-            self.left = u32::from(n);
+            let acc = core::mem::take(&mut self.acc);
+            let (seg, rest) = acc.split_at_mut((usize::from(n) * C).min(acc.len()));
+            self.acc = rest;
+            let x = self.x0 + i32::from(self.col);
+            self.col = end;
             if n > 0 {
-                return true;
+                return Some(match (pixels, self.uniform) {
+                    // Those pixels' accumulator holds the background.
+                    (false, Some(_)) => Segment {
+                        acc: &mut [],
+                        uniform: u32::from(n),
+                        x,
+                    },
+                    _ => Segment {
+                        acc: seg,
+                        uniform: 0,
+                        x,
+                    },
+                });
             }
         }
-    }
-
-    /// The next pixel of a pixel segment: its one rounding, its reset to
-    /// the background, its colour.
-    #[inline]
-    fn pixel(&mut self) -> Option<P::Color> {
-        let k = self.col;
-        self.col += 1;
-        let (px, rest) = core::mem::take(&mut self.acc).split_first_chunk_mut::<C>()?;
-        self.acc = rest;
-        let mut lin = [0u16; C];
-        for ch in 0..C {
-            lin[ch] = crate::band::resolve(px[ch]);
-            px[ch] = self.bg[ch];
-        }
-        Some(self.profile.color(self.x0 + i32::from(k), self.y, lin))
     }
 }
 
-impl<P: Profile<C>, const C: usize> Iterator for BandPixels<'_, P, C> {
+impl<P: Profile<C>, const C: usize> Iterator for BandPixels<'_, '_, P, C> {
     type Item = P::Color;
 
     #[inline]
     fn next(&mut self) -> Option<P::Color> {
-        if self.left == 0 && !self.next_segment() {
-            return None;
-        }
-        self.left -= 1;
-        match self.seg {
-            Some(u) => Some(u),
-            None => self.pixel(),
+        loop {
+            // A pixel of a pixel segment: its one rounding, its reset to
+            // the background, its colour.
+            if let Some((px, rest)) = core::mem::take(&mut self.seg).split_first_chunk_mut::<C>() {
+                self.seg = rest;
+                let x = self.x;
+                self.x += 1;
+                let mut lin = [0u16; C];
+                for ch in 0..C {
+                    lin[ch] = crate::band::resolve(px[ch]);
+                    px[ch] = self.rows.bg[ch];
+                }
+                return Some(self.rows.profile.color(x, self.rows.y, lin));
+            }
+            if self.left > 0 {
+                self.left -= 1;
+                return self.rows.uniform;
+            }
+            let next = self.rows.next_segment()?;
+            (self.seg, self.left, self.x) = (next.acc, next.uniform, next.x);
         }
     }
 }
