@@ -325,6 +325,7 @@ where
         seg: &mut [],
         left: 0,
         x: band.x0,
+        uniform,
         rows: &mut rows,
     };
     target.fill_contiguous(&area, pixels)
@@ -350,6 +351,9 @@ struct BandPixels<'r, 'x, P: Profile<C>, const C: usize> {
     left: u32,
     /// Frame column of `seg`'s first pixel.
     x: i32,
+    /// The colour of uniform pixels (a copy of `rows.uniform`, read here
+    /// from a register rather than through `rows`).
+    uniform: Option<P::Color>,
     /// The band's segments after the current one (a local of [`send`]'s,
     /// by reference: its address is taken by the slow path).
     rows: &'r mut Segments<'x, P, C>,
@@ -448,21 +452,26 @@ impl<P: Profile<C>, const C: usize> Iterator for BandPixels<'_, '_, P, C> {
     fn next(&mut self) -> Option<P::Color> {
         loop {
             // A pixel of a pixel segment: its one rounding, its reset to
-            // the background, its colour.
-            if let Some((px, rest)) = core::mem::take(&mut self.seg).split_first_chunk_mut::<C>() {
-                self.seg = rest;
-                let x = self.x;
-                self.x += 1;
-                let mut lin = [0u16; C];
-                for ch in 0..C {
-                    lin[ch] = crate::band::resolve(px[ch]);
-                    px[ch] = self.rows.bg[ch];
+            // the background, its colour. (The length is tested before the
+            // slice is taken, so a uniform pixel does not write it.)
+            if self.seg.len() >= C {
+                if let Some((px, rest)) =
+                    core::mem::take(&mut self.seg).split_first_chunk_mut::<C>()
+                {
+                    self.seg = rest;
+                    let x = self.x;
+                    self.x += 1;
+                    let mut lin = [0u16; C];
+                    for ch in 0..C {
+                        lin[ch] = crate::band::resolve(px[ch]);
+                        px[ch] = self.rows.bg[ch];
+                    }
+                    return Some(self.rows.profile.color(x, self.rows.y, lin));
                 }
-                return Some(self.rows.profile.color(x, self.rows.y, lin));
             }
             if self.left > 0 {
                 self.left -= 1;
-                return self.rows.uniform;
+                return self.uniform;
             }
             let next = self.rows.next_segment()?;
             (self.seg, self.left, self.x) = (next.acc, next.uniform, next.x);
