@@ -173,7 +173,37 @@ pub struct Canvas<'c, 'b, const C: usize, Col = [u16; C]> {
     skipped: Skipped,
     /// The whole frame, for embedded-graphics' clipping.
     frame: (u16, u16),
+    /// The band's rows and columns widened by a margin, whole pixels:
+    /// what a shape's bounds must reach to be drawn (see `touches`).
+    reach: Reach,
     color: core::marker::PhantomData<Col>,
+}
+
+/// A band's rows `y_lo..y_hi` and columns `x_lo..x_hi`, each widened by
+/// [`Reach::MARGIN`] pixels (saturating), found once per band: the test
+/// every shape of every band starts with is then four compares.
+#[derive(Debug, Clone, Copy)]
+struct Reach {
+    y_lo: i32,
+    y_hi: i32,
+    x_lo: i32,
+    x_hi: i32,
+}
+
+impl Reach {
+    /// Pixels a shape's bounds may fall short of the band and still be
+    /// walked (its edges' cells reach that far).
+    const MARGIN: i32 = 2;
+
+    fn of(band: crate::band::Band) -> Self {
+        let (rows, cols) = (band.row_range(), band.column_range());
+        Self {
+            y_lo: rows.start.saturating_sub(Self::MARGIN),
+            y_hi: rows.end.saturating_add(Self::MARGIN),
+            x_lo: cols.start.saturating_sub(Self::MARGIN),
+            x_hi: cols.end.saturating_add(Self::MARGIN),
+        }
+    }
 }
 
 /// Which walk an edge takes under a style.
@@ -210,6 +240,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             style: RenderStyle::default(),
             skipped: Skipped::default(),
             frame,
+            reach: Reach::of(band),
             color: core::marker::PhantomData,
         }
     }
@@ -650,14 +681,11 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
     /// True when the box can touch the band (pixel models reach up to
     /// 1.5 px beyond a pixel).
     fn touches(&self, b: &FineRect) -> bool {
-        let band = self.buf.band();
-        let margin = 2;
-        let rows = band.row_range();
-        let cols = band.column_range();
-        (b.y1 >> FINE_BITS) + margin >= rows.start
-            && (b.y0 >> FINE_BITS) - margin < rows.end
-            && (b.x1 >> FINE_BITS) + margin >= cols.start
-            && (b.x0 >> FINE_BITS) - margin < cols.end
+        let r = &self.reach;
+        (b.y1 >> FINE_BITS) >= r.y_lo
+            && (b.y0 >> FINE_BITS) < r.y_hi
+            && (b.x1 >> FINE_BITS) >= r.x_lo
+            && (b.x0 >> FINE_BITS) < r.x_hi
     }
 
     /// Walks the outline's edges (indices from `first`) into the scratch

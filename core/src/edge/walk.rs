@@ -684,13 +684,21 @@ impl EdgeWalk {
         }
         // Where the walk starts: where the last band stopped, or directly
         // at the column holding the crossing of this band's top boundary.
-        let (mut a, mut prev, mut st, mut x) = match &self.resume {
-            Some(r) if r.row == y0 => (r.a, r.prev, r.st, r.x),
+        // (Fields are copied one by one, the crossing state straight into
+        // `x`: a tuple of them was built first and then copied again, two
+        // library copies of 72 bytes per band on the Cortex-M0.)
+        let (mut a, mut prev, mut st, mut x);
+        match &self.resume {
+            Some(r) if r.row == y0 => {
+                (a, prev, st) = (r.a, r.prev, r.st);
+                x = r.x;
+            }
             _ => {
                 let r = g.x_start(y0);
-                (r.a, r.prev, r.st, r.x)
+                (a, prev, st) = (r.a, r.prev, r.st);
+                x = r.x;
             }
-        };
+        }
         // Whether the state the next band starts from is stored yet: it is
         // written in place when the walk reaches it (a resume is a few
         // dozen words, and each copy of one costs on the Cortex-M0).
