@@ -30,7 +30,7 @@ use core::ops::Range;
 
 use crate::band::{BandBuffer, ComposeOp, Coverage, Paint};
 use crate::edge::{AliasedWalk, AreaMode};
-use crate::geom::{FinePoint, SubPoint, FINE_BITS};
+use crate::geom::{FinePoint, SubPoint, FINE_BITS, FINE_LIMIT};
 use crate::path::SegmentSink;
 use crate::pixel_model::{walk_bed_of_nails, walk_circular, walk_hex19, walk_hex7, CircularFilter};
 use crate::raster::{DrawError, PixelModel, RenderStyle};
@@ -125,6 +125,13 @@ impl Outline for [FinePoint; 3] {
     }
 }
 
+/// `-FINE_LIMIT <= c <= FINE_LIMIT` (what [`FinePoint::in_range`] asks of
+/// each coordinate) in one unsigned compare.
+#[inline]
+fn in_fine_range(c: i32) -> bool {
+    (c.wrapping_add(FINE_LIMIT) as u32) <= 2 * FINE_LIMIT as u32
+}
+
 /// The box around a triangle's vertices ([`FineRect::around`] unrolled:
 /// every shape in every band is tested against the band with it).
 #[inline]
@@ -194,6 +201,13 @@ impl Reach {
     /// Pixels a shape's bounds may fall short of the band and still be
     /// walked (its edges' cells reach that far).
     const MARGIN: i32 = 2;
+
+    /// True when fine rows `y0..=y1` can touch the band's rows (the row
+    /// half of `Canvas::touches`).
+    #[inline]
+    fn rows(&self, y0: i32, y1: i32) -> bool {
+        (y1 >> FINE_BITS) >= self.y_lo && (y0 >> FINE_BITS) < self.y_hi
+    }
 
     fn of(band: crate::band::Band) -> Self {
         let (rows, cols) = (band.row_range(), band.column_range());
@@ -615,9 +629,24 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         colors: [[u16; C]; 3],
         op: ComposeOp,
     ) -> Result<(), DrawError> {
+        // Most of a band's triangles miss its rows: that is found first,
+        // from the y extent alone, with the range test the box test below
+        // would make (every coordinate within `FINE_LIMIT`), so that a
+        // vertex out of range is still reported in every band.
+        let [p, q, r] = &v;
+        let (y_lo, y_hi) = (p.y.min(q.y).min(r.y), p.y.max(q.y).max(r.y));
+        if !self.reach.rows(y_lo, y_hi)
+            && in_fine_range(y_lo)
+            && in_fine_range(y_hi)
+            && in_fine_range(p.x)
+            && in_fine_range(q.x)
+            && in_fine_range(r.x)
+        {
+            return Ok(());
+        }
         // Every vertex is in range when the box's corners are (the range is
-        // a box): two tests for the shapes of every band, and the first
-        // vertex out of range looked for only when there is one.
+        // a box): two tests, and the first vertex out of range looked for
+        // only when there is one.
         let b = triangle_box(&v);
         if !(FinePoint::new(b.x0, b.y0).in_range() && FinePoint::new(b.x1, b.y1).in_range()) {
             for p in v {
@@ -682,10 +711,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
     /// 1.5 px beyond a pixel).
     fn touches(&self, b: &FineRect) -> bool {
         let r = &self.reach;
-        (b.y1 >> FINE_BITS) >= r.y_lo
-            && (b.y0 >> FINE_BITS) < r.y_hi
-            && (b.x1 >> FINE_BITS) >= r.x_lo
-            && (b.x0 >> FINE_BITS) < r.x_hi
+        r.rows(b.y0, b.y1) && (b.x1 >> FINE_BITS) >= r.x_lo && (b.x0 >> FINE_BITS) < r.x_hi
     }
 
     /// Walks the outline's edges (indices from `first`) into the scratch
@@ -933,4 +959,75 @@ fn sampled_edge<const C: usize>(
         PixelModel::Hamming => walk_circular(buf, a, b, CircularFilter::Hamming, rows),
         _ => {}
     }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::band::Band;
+    use crate::style::{Blend, Opacity};
+
+    /// The band test a triangle starts with: one missing the band's rows
+    /// draws nothing and is no error; one with a coordinate out of range
+    /// is the same error (its first vertex out of range) in every band,
+    /// whether or not its rows meet the band; one within the margin of
+    /// the band's rows is drawn.
+    #[test]
+    fn triangles_missing_a_band_are_skipped_and_bad_ones_reported_in_every_band() {
+        const W: u16 = 32;
+        let px = |x: i32, y: i32| FinePoint::new(x * FINE_ONE_PX, y * FINE_ONE_PX);
+        let far = FINE_LIMIT + 1;
+        for y0 in [0, 16, 48] {
+            let (mut acc, mut cover) = ([0i32; 16 * 32], [0i32; 16 * (32 + 4)]);
+            let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band::new(W, y0, 16)).unwrap();
+            buf.clear([0]);
+            let mut c = Canvas::new(&mut buf, None);
+            let mut fill =
+                |v: [FinePoint; 3]| c.fill_triangle(v, [[4095]; 3], Blend::Over, Opacity::OPAQUE);
+            // Rows far below or above every band tried: nothing.
+            assert_eq!(fill([px(1, 200), px(20, 200), px(1, 230)]), Ok(()));
+            assert_eq!(fill([px(1, -90), px(20, -90), px(1, -60)]), Ok(()));
+            // Out of range in x, rows far from the band: still reported,
+            // naming the first vertex out of range.
+            let bad = FinePoint::new(far, 200 * FINE_ONE_PX);
+            assert_eq!(
+                fill([px(1, 200), bad, FinePoint::new(-far, 230 * FINE_ONE_PX)]),
+                Err(DrawError::FineCoord(bad))
+            );
+            let bad_y = FinePoint::new(0, -far);
+            assert_eq!(
+                fill([bad_y, px(20, 200), px(1, 230)]),
+                Err(DrawError::FineCoord(bad_y))
+            );
+            assert!(
+                (0..16).all(|r| (0..i32::from(W)).all(|x| buf.lin12(x, y0 + r) == Some([0]))),
+                "band at {y0}: nothing drawn"
+            );
+        }
+        // A triangle whose rows end a pixel above the band still reaches it
+        // through the margin test and is walked (its cells there are empty,
+        // so the band stays clear), and one across the band is drawn.
+        let (mut acc, mut cover) = ([0i32; 16 * 32], [0i32; 16 * (32 + 4)]);
+        let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band::new(W, 16, 16)).unwrap();
+        buf.clear([0]);
+        let mut c = Canvas::new(&mut buf, None);
+        c.fill_triangle(
+            [px(1, 0), px(20, 0), px(1, 15)],
+            [[4095]; 3],
+            Blend::Over,
+            Opacity::OPAQUE,
+        )
+        .unwrap();
+        c.fill_triangle(
+            [px(1, 10), px(20, 10), px(1, 30)],
+            [[4095]; 3],
+            Blend::Over,
+            Opacity::OPAQUE,
+        )
+        .unwrap();
+        assert_eq!(buf.lin12(2, 20), Some([4095]));
+        assert_eq!(buf.lin12(30, 20), Some([0]));
+    }
+
+    const FINE_ONE_PX: i32 = 1 << FINE_BITS;
 }
