@@ -77,9 +77,9 @@ const H: u16 = 240;
 /// Rows per band. Per band, every shape that reaches it is described
 /// again (its curves' vertices computed where they meet the band) and its
 /// edges there set up or resumed, and on the Cortex-M0 that, more than
-/// the pixels, is what a frame costs: this panel costs 33.6 M
-/// instructions a whole frame in 16-row bands and 23.7 M in 40-row ones,
-/// a partial redraw 11.1 M and 7.8 M (`bench-m0`, boards/README.md). 40
+/// the pixels, is what a frame costs: this panel costs 33.2 M
+/// instructions a whole frame in 16-row bands and 23.1 M in 40-row ones,
+/// a partial redraw 11.2 M and 7.8 M (`bench-m0`, boards/README.md). 40
 /// rows divide the panel into 6 bands; their buffers take 154 240 bytes,
 /// 58 % of the RP2040's 264 KiB.
 const BAND_ROWS: u16 = 40;
