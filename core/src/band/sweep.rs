@@ -345,21 +345,21 @@ fn fill<'p, const C: usize>(px: &'p mut [i32], f: &[i32; C], n: usize) -> &'p mu
     let end = (n * C).min(px.len());
     let (mut run, rest) = px.split_at_mut(end);
     let f = *f;
-    let mut k = n;
-    while k >= 4 {
-        for _ in 0..4 {
-            if let Some((p, more)) = core::mem::take(&mut run).split_first_chunk_mut::<C>() {
-                *p = f;
-                run = more;
-            }
-        }
-        k -= 4;
-    }
-    for _ in 0..k {
+    let mut put = || {
         if let Some((p, more)) = core::mem::take(&mut run).split_first_chunk_mut::<C>() {
             *p = f;
             run = more;
         }
+    };
+    let mut k = n;
+    while k >= 4 {
+        for _ in 0..4 {
+            put();
+        }
+        k -= 4;
+    }
+    for _ in 0..k {
+        put();
     }
     rest
 }

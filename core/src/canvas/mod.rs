@@ -30,7 +30,7 @@ use core::ops::Range;
 
 use crate::band::{BandBuffer, ComposeOp, Coverage, Paint};
 use crate::edge::{AliasedWalk, AreaMode};
-use crate::geom::{FinePoint, SubPoint, FINE_BITS, FINE_LIMIT};
+use crate::geom::{in_fine_range, FinePoint, SubPoint, FINE_BITS};
 use crate::path::SegmentSink;
 use crate::pixel_model::{walk_bed_of_nails, walk_circular, walk_hex19, walk_hex7, CircularFilter};
 use crate::raster::{DrawError, PixelModel, RenderStyle};
@@ -123,13 +123,6 @@ impl Outline for [FinePoint; 3] {
         f(b, c);
         f(c, a);
     }
-}
-
-/// `-FINE_LIMIT <= c <= FINE_LIMIT` (what [`FinePoint::in_range`] asks of
-/// each coordinate) in one unsigned compare.
-#[inline]
-fn in_fine_range(c: i32) -> bool {
-    (c.wrapping_add(FINE_LIMIT) as u32) <= 2 * FINE_LIMIT as u32
 }
 
 /// The box around a triangle's vertices ([`FineRect::around`] unrolled:
@@ -965,6 +958,7 @@ fn sampled_edge<const C: usize>(
 mod tests {
     use super::*;
     use crate::band::Band;
+    use crate::geom::FINE_LIMIT;
     use crate::style::{Blend, Opacity};
 
     /// The band test a triangle starts with: one missing the band's rows
@@ -1011,20 +1005,13 @@ mod tests {
         let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band::new(W, 16, 16)).unwrap();
         buf.clear([0]);
         let mut c = Canvas::new(&mut buf, None);
-        c.fill_triangle(
+        for v in [
             [px(1, 0), px(20, 0), px(1, 15)],
-            [[4095]; 3],
-            Blend::Over,
-            Opacity::OPAQUE,
-        )
-        .unwrap();
-        c.fill_triangle(
             [px(1, 10), px(20, 10), px(1, 30)],
-            [[4095]; 3],
-            Blend::Over,
-            Opacity::OPAQUE,
-        )
-        .unwrap();
+        ] {
+            c.fill_triangle(v, [[4095]; 3], Blend::Over, Opacity::OPAQUE)
+                .unwrap();
+        }
         assert_eq!(buf.lin12(2, 20), Some([4095]));
         assert_eq!(buf.lin12(30, 20), Some([0]));
     }

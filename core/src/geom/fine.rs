@@ -90,11 +90,15 @@ impl FinePoint {
 
     /// True inside the accepted range, `|x|, |y| <= FINE_LIMIT`.
     pub const fn in_range(self) -> bool {
-        self.x >= -FINE_LIMIT
-            && self.x <= FINE_LIMIT
-            && self.y >= -FINE_LIMIT
-            && self.y <= FINE_LIMIT
+        in_fine_range(self.x) && in_fine_range(self.y)
     }
+}
+
+/// `-FINE_LIMIT <= c <= FINE_LIMIT` for one coordinate, in one unsigned
+/// compare (a coordinate below the range wraps to above it).
+#[inline]
+pub(crate) const fn in_fine_range(c: i32) -> bool {
+    (c.wrapping_add(FINE_LIMIT) as u32) <= 2 * FINE_LIMIT as u32
 }
 
 impl From<SubPoint> for FinePoint {

@@ -21,6 +21,7 @@ use fixed::types::I28F4;
 mod errors;
 mod fine;
 
+pub(crate) use fine::in_fine_range;
 pub use fine::{FinePoint, PathSink, FINE_BITS, FINE_LIMIT, FINE_ONE};
 
 /// Fractional bits of a sub-pixel coordinate.
