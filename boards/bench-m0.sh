@@ -73,6 +73,10 @@ $1 == "redraw" {
     if (!($2 in rseen)) { rseen[$2] = 1; rorder[++nd] = $2 }
     redraw[$2, $3] = $4; windows[$2, $3] = $5; pixels[$2, $3] = $6; bytes[$2, $3] = $7
 }
+$1 == "cache" {
+    if (!($2 in cseen)) { cseen[$2] = 1; corder[++nk] = $2 }
+    cbytes[$2] = $3; cache[$2, $4] = $6; if ($4 == 3) b3 = $5
+}
 $1 == "workload" { tris[$2] = $3; area2[$2] = $4; marginal2[$2] = $5 }
 $1 == "panel" {
     if (!($2 in pseen)) { pseen[$2] = 1; porder[++np] = $2 }
@@ -124,6 +128,15 @@ END {
         printf "| %s ", (r in label ? label[r] : r)
         for (k = 1; k <= 7; k++) printf "| %s ", mega(screen[r, bh[k]])
         printf "|\n"
+    }
+    printf "\nWhat the walk cache buys: the screen, softedge AA flat RGB, by walk-cache slots (caller-provided, `WalkSlot::<3>::SIZE` bytes each), "
+    printf "and the RAM of the 3-row frame (band buffers, %s bytes, + cache):\n\n", group(b3)
+    printf "| walk-cache slots | cache bytes | 16-row bands | 3-row bands | 3 rows / 16 rows | 3-row RAM, band + cache |\n"
+    printf "| ---: | ---: | ---: | ---: | ---: | ---: |\n"
+    for (i = 1; i <= nk; i++) {
+        k = corder[i]
+        printf "| %s | %s | %s | %s | %.2fx | %s |\n", k, group(cbytes[k]), mega(cache[k, 16]), mega(cache[k, 3]), \
+            cache[k, 3] / cache[k, 16], group(cbytes[k] + b3)
     }
     printf "\nRaw counts (instructions per frame):\n\n```\n"
     for (i = 1; i <= nr; i++) {

@@ -83,6 +83,15 @@ pub fn report(width: u16, height: u16, channels: usize, rows: &[u16], triangles:
         "a frame's depth triangles, sorted once per frame: {per} bytes each, {} for {triangles}\n",
         per * triangles
     );
+    let slot = if channels == 1 {
+        softedge::canvas::WalkSlot::<1>::SIZE
+    } else {
+        softedge::canvas::WalkSlot::<3>::SIZE
+    };
+    out += &format!(
+        "walk cache (optional, caller-provided, not in the totals above): {slot} bytes a slot \
+         (an edge's walk state or a Gouraud plane carried to the next band)\n"
+    );
     out
 }
 

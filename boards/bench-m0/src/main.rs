@@ -48,6 +48,7 @@ use cortex_m_rt::{entry, exception};
 use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 use embedded_graphics::prelude::*;
 use softedge::canvas::WalkSlot;
+use softedge::BandBuffer;
 use softedge_board_common::{self as fw, insns::Counter, Line};
 use softedge_workloads::render::eg_side;
 use softedge_workloads::render::softedge_side::{
@@ -59,6 +60,8 @@ use softedge_workloads::{Tri, Workload, CLASSES, COUNT, SCREEN};
 
 /// Band heights of the screen sweep (16 is also every other run's).
 const SCREEN_BANDS: [u16; 7] = [16, 8, 6, 4, 3, 2, 1];
+/// Walk-cache sizes (slots) of the cache sweep.
+const CACHE_SLOTS: [usize; 6] = [0, 16, 32, 64, 128, SLOTS];
 /// Band height of the workload runs.
 const BAND_ROWS: u16 = 16;
 /// What embedded-graphics' framebuffer is reported as: one band of the
@@ -143,6 +146,29 @@ fn main() -> ! {
         }
         for rows in SCREEN_BANDS {
             run(&SCREEN, SCREEN.tris, rows);
+        }
+    }
+
+    // The walk cache's RAM against its time (issue 14): the screen, AA
+    // flat RGB, by the number of cache slots, in 16- and 3-row bands.
+    for slots in CACHE_SLOTS {
+        for rows in [BAND_ROWS, 3] {
+            let all = SCREEN.tris.len();
+            if let Some((insns, ok)) = bench.measure("aa_rgb_cache", "screen", all, all, rows, || {
+                softedge_side::frame_with_cache(SCREEN.tris, rows, slots, &mut bufs).is_ok()
+            }) {
+                Bench::tag(ok, "cache ")
+                    .dec(slots as u64)
+                    .text(" ")
+                    .dec((slots * WalkSlot::<3>::SIZE) as u64)
+                    .text(" ")
+                    .dec(u64::from(rows))
+                    .text(" ")
+                    .dec(band_bytes(rows))
+                    .text(" ")
+                    .dec(insns)
+                    .print();
+            }
         }
     }
 
@@ -277,6 +303,14 @@ fn main() -> ! {
         Line::new().text("done").print();
     }
     fw::exit(ok)
+}
+
+/// Bytes of an RGB band buffer (accumulator and cover scratch) of
+/// `rows` rows of the frame.
+fn band_bytes(rows: u16) -> u64 {
+    let w = softedge_workloads::FRAME;
+    let n = BandBuffer::<3>::acc_len(w, rows) + BandBuffer::<3>::cover_len(w, rows);
+    (n * core::mem::size_of::<i32>()) as u64
 }
 
 /// The frame without triangles (the fixed cost), as a workload name.

@@ -28,7 +28,9 @@ use crate::shade::Plane;
 const PROBE: usize = 4;
 
 /// One slot of a [`WalkCache`]; make arrays of them with
-/// [`WalkSlot::EMPTY`].
+/// [`WalkSlot::EMPTY`]. A slot is [`WalkSlot::SIZE`] bytes (368 on
+/// thumbv6m and x86-64): RAM beside the band buffers, so size the cache
+/// for the edges alive across a band boundary, not for the frame's.
 #[derive(Debug, Clone)]
 pub struct WalkSlot<const C: usize> {
     key: u64,

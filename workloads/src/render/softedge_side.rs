@@ -115,17 +115,34 @@ pub fn frame(
     }
     match renderer {
         Renderer::AaFlatRgb => {
-            frame_rgb(tris, band_rows, bufs, RenderStyle::default(), false, true)
+            frame_rgb(tris, band_rows, bufs, RenderStyle::default(), false, SLOTS)
         }
         Renderer::AaGouraudRgb => {
-            frame_rgb(tris, band_rows, bufs, RenderStyle::default(), true, true)
+            frame_rgb(tris, band_rows, bufs, RenderStyle::default(), true, SLOTS)
         }
-        Renderer::AliasedRgb => frame_rgb(tris, band_rows, bufs, RenderStyle::ALIASED, false, true),
+        Renderer::AliasedRgb => {
+            frame_rgb(tris, band_rows, bufs, RenderStyle::ALIASED, false, SLOTS)
+        }
         Renderer::AaGray => frame_gray(tris, band_rows, bufs),
         Renderer::AaFlatRgbNoCache => {
-            frame_rgb(tris, band_rows, bufs, RenderStyle::default(), false, false)
+            frame_rgb(tris, band_rows, bufs, RenderStyle::default(), false, 0)
         }
     }
+}
+
+/// [`Renderer::AaFlatRgb`] with only the first `slots` walk-cache slots
+/// (at most [`SLOTS`]; 0 is [`Renderer::AaFlatRgbNoCache`]): what the
+/// cache's RAM buys.
+pub fn frame_with_cache(
+    tris: &[Tri],
+    band_rows: u16,
+    slots: usize,
+    bufs: &mut Buffers<'_>,
+) -> Result<(), FrameError> {
+    if band_rows > MAX_BAND_ROWS {
+        return Err(FrameError);
+    }
+    frame_rgb(tris, band_rows, bufs, RenderStyle::default(), false, slots)
 }
 
 fn vertices(t: &Tri) -> [FinePoint; 3] {
@@ -139,9 +156,10 @@ fn frame_rgb(
     bufs: &mut Buffers<'_>,
     style: RenderStyle,
     gouraud: bool,
-    cached: bool,
+    slots: usize,
 ) -> Result<(), FrameError> {
-    let slots: &mut [WalkSlot<3>] = if cached { &mut *bufs.slots3 } else { &mut [] };
+    let n = slots.min(bufs.slots3.len());
+    let slots: &mut [WalkSlot<3>] = &mut bufs.slots3[..n];
     let mut r = FrameRenderer::<3>::new(
         &mut *bufs.acc,
         &mut *bufs.cover,
