@@ -26,7 +26,12 @@ pub const MAX_POLYGON_VERTICES: usize = 64;
 pub const LIN_MAX: u16 = 4095;
 
 /// Rounds an accumulated value to linear 12 bits: the pipeline's one
-/// rounding.
+/// rounding, to nearest (halves up), then clamped to `0..=4095`.
+///
+/// (`(acc + 2^15) >> 16` in `u32`, with the sign tested only out of
+/// range, is the same function, but LLVM turns its clamp into selects
+/// computed for every pixel: 20 more Cortex-M0 instructions a pixel in
+/// the flush.)
 #[inline]
 pub(crate) fn resolve(acc: i32) -> u16 {
     let v = ((acc >> (COVER_BITS - 1)) + 1) >> 1;
@@ -37,5 +42,47 @@ pub(crate) fn resolve(acc: i32) -> u16 {
         0
     } else {
         LIN_MAX
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The rounding in exact arithmetic: `floor(acc / 2^16 + 1/2)`,
+    /// clamped.
+    fn reference(acc: i32) -> u16 {
+        let v = (i64::from(acc) + (1 << 15)).div_euclid(1 << 16);
+        v.clamp(0, i64::from(LIN_MAX)) as u16
+    }
+
+    #[test]
+    fn resolve_rounds_halves_up_and_clamps_over_the_whole_range() {
+        let check = |acc: i32| assert_eq!(resolve(acc), reference(acc), "acc = {acc}");
+        for acc in [i32::MIN, i32::MIN + 1, -1, 0, 1, i32::MAX - 1, i32::MAX] {
+            check(acc);
+        }
+        let half = 1 << 15;
+        for k in [-2, -1, 0, 1, 2, 4094, 4095, 4096, 4097] {
+            for d in [
+                -half - 1,
+                -half,
+                -half + 1,
+                -1,
+                0,
+                1,
+                half - 1,
+                half,
+                half + 1,
+            ] {
+                check(k * COVER_ONE + d);
+            }
+        }
+        // And a walk over all of i32 in steps that are not a power of two.
+        let mut a = i64::from(i32::MIN);
+        while a <= i64::from(i32::MAX) {
+            check(a as i32);
+            a += 65_537 * 3 + 7;
+        }
     }
 }
