@@ -6,7 +6,8 @@
 # marginal instructions per pixel of triangle area for each size class,
 #     (insns(N = 2000) - insns(N = 1)) / (summed area of triangles 2..2000),
 # and the 132-triangle screen; then the screen at band heights 16..1.
-# Then (issue 16) a filled circle and a stroked arc gauge alone on the
+# Then (issue 16) a filled circle, a stroked arc gauge and a line chart (stroked
+# in every band, or recorded once per frame into a SegmentBuffer) alone on the
 # frame, softedge (AaStyle) against embedded-graphics (PrimitiveStyle):
 # the frame's instructions and the shape's marginal cost (frame with the
 # shape - the same renderer's frame without it); and (issue 15) a dial
@@ -172,6 +173,20 @@ END {
             printf "| %s | %s | %s ", group(m), perpx(m / area[sh[k]]), group(shape[r, sh[k]])
         }
         printf "|\n"
+    }
+    # The line chart of ui.rs: 60 points 4 px apart, stroke 3 px, miter
+    # joins, butt caps; softedge strokes it in every band it meets, or
+    # once per frame into a SegmentBuffer filled in every band
+    # (e-g draws its polyline again for the second column).
+    printf "\nA line chart (60 points, stroke 3 px, miter joins), instructions; marginal as above:\n\n"
+    printf "| renderer | chart, marginal | chart, frame | recorded once per frame, marginal | recorded, frame |\n"
+    printf "| --- | ---: | ---: | ---: | ---: |\n"
+    for (i = 1; i <= ns; i++) {
+        r = sorder[i]
+        if (!((r, "chart") in shape)) continue
+        printf "| %s | %s | %s | %s | %s |\n", (r in slabel ? slabel[r] : r), \
+            group(shape[r, "chart"] - shape[r, "none"]), group(shape[r, "chart"]), \
+            group(shape[r, "chart_recorded"] - shape[r, "none"]), group(shape[r, "chart_recorded"])
     }
     rlabel["aa_rgb"] = "softedge AA, `render` / `render_window`, 16-row bands"
     rlabel["eg_fill"] = "e-g aliased, framebuffer; window: the shapes meeting it, `clipped`"

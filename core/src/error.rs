@@ -43,6 +43,9 @@ pub enum DrawError {
     ColorCount,
     /// Two non-adjacent edges of the polygon touch or cross.
     SelfIntersecting,
+    /// A recorded outline lost segments: its
+    /// [`SegmentBuffer`](crate::path::SegmentBuffer) was too small.
+    Incomplete,
 }
 
 impl From<CoordError> for DrawError {
@@ -62,6 +65,9 @@ impl Display for DrawError {
                 f.write_str("per-vertex colours for a different number of vertices")
             }
             Self::SelfIntersecting => f.write_str("polygon intersects itself"),
+            Self::Incomplete => {
+                f.write_str("recorded outline lost segments (its buffer was too small)")
+            }
             Self::FineCoord(p) => write!(
                 f,
                 "point ({}, {}) in 1/1024 px is outside ±{COORD_LIMIT_PX} px",

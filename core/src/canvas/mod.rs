@@ -91,6 +91,14 @@ pub trait Outline {
     fn segments_into<K: SegmentSink>(&self, sink: &mut K) {
         self.segments(|a, b| sink.segment(a, b));
     }
+
+    /// False when the outline is known to have lost segments (a
+    /// [`SegmentBuffer`](crate::path::SegmentBuffer) that overflowed): it
+    /// is then refused with [`DrawError::Incomplete`] in every band. The
+    /// default is true.
+    fn complete(&self) -> bool {
+        true
+    }
 }
 
 /// A closed polygon given by its vertices (the last joins the first).
@@ -449,6 +457,9 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
+        if !outline.complete() {
+            return Err(DrawError::Incomplete);
+        }
         let paint = match fill {
             Fill::Flat(color) => Paint::Flat(color.map(|v| v.min(crate::LIN_MAX))),
             // A gradient of one colour is that flat colour.

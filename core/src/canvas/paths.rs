@@ -11,10 +11,17 @@
 //! ends of the pieces of 8 vertices that miss them; the segments left out
 //! are counted ([`SegmentSink::skipped`]), so every segment keeps its
 //! number, by which the walk cache finds it in the next band.
+//!
+//! Or a shape is recorded once into a caller's
+//! [`SegmentBuffer`](crate::path::SegmentBuffer) (its fill or its stroke's
+//! outline, 16 bytes a segment) and the buffer is the outline: each band
+//! then visits the stored segments and walks those that cross its rows
+//! (one compare of the y extent for the others). The same segments in the
+//! same order: the same bits as the shape drawn directly.
 
 use super::{FineRect, Outline};
 use crate::geom::{FinePoint, PathSink, FINE_LIMIT};
-use crate::path::{SegmentSink, Shape, StrokeError, StrokeStyle, Tolerance};
+use crate::path::{SegmentBuffer, SegmentSink, Shape, StrokeError, StrokeStyle, Tolerance};
 
 /// The box around every point a description names.
 #[derive(Default)]
@@ -164,9 +171,50 @@ impl<S: Shape + ?Sized> Outline for Stroked<'_, '_, S> {
     }
 }
 
+/// A recorded outline: the segments kept, in their order. Filled in a
+/// band, the segments whose y extent lies wholly outside the band's rows
+/// are left out and counted (they keep their numbers for the walk cache);
+/// an overflowed buffer is refused ([`DrawError::Incomplete`]).
+///
+/// [`DrawError::Incomplete`]: crate::DrawError::Incomplete
+impl Outline for SegmentBuffer<'_> {
+    fn bounds(&self) -> Option<FineRect> {
+        self.extent().map(|(lo, hi)| FineRect {
+            x0: lo.x,
+            y0: lo.y,
+            x1: hi.x,
+            y1: hi.y,
+        })
+    }
+    fn segments<F: FnMut(FinePoint, FinePoint)>(&self, mut f: F) {
+        for s in self.segments() {
+            f(s.from, s.to);
+        }
+    }
+    fn segments_into<K: SegmentSink>(&self, sink: &mut K) {
+        let Some((lo, hi)) = sink.window() else {
+            return self.replay(sink);
+        };
+        for s in self.segments() {
+            let (a, b) = (s.from.y, s.to.y);
+            if (a < lo && b < lo) || (a > hi && b > hi) {
+                sink.skipped(1);
+            } else {
+                sink.segment(s.from, s.to);
+            }
+        }
+    }
+    fn complete(&self) -> bool {
+        !self.overflowed()
+    }
+}
+
 #[cfg(test)]
 mod tests {
+    extern crate std;
+
     use super::*;
+    use crate::canvas::Canvas;
     use crate::path::testing::Lcg;
     use crate::path::{
         Arc, Circle, CornerRadii, Degrees, Ellipse, LineCap, Rectangle, RoundedRectangle, Sector,
@@ -227,5 +275,140 @@ mod tests {
                 case,
             );
         }
+    }
+
+    /// A `w x 48` frame in bands of `rows`, each drawn by `draw` on a
+    /// canvas with a walk cache; the resolved linear values, and the
+    /// shapes the bands skipped.
+    fn frame(
+        w: u16,
+        rows: u16,
+        mut draw: impl FnMut(&mut Canvas<'_, '_, 1>),
+    ) -> (std::vec::Vec<u16>, u32) {
+        use crate::band::{BandBuffer, Bands};
+        use crate::canvas::{WalkCache, WalkSlot};
+        let h = 48;
+        let mut acc = std::vec![0i32; BandBuffer::<1>::acc_len(w, rows)];
+        let mut cover = std::vec![0i32; BandBuffer::<1>::cover_len(w, rows)];
+        let mut slots = std::vec![WalkSlot::<1>::EMPTY; 32];
+        WalkCache::new(&mut slots).clear();
+        let mut out = std::vec![0u16; usize::from(w) * usize::from(h)];
+        let mut skipped = 0;
+        for band in Bands::new(w, h, rows) {
+            let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
+            buf.clear([300]);
+            let mut canvas = Canvas::new(&mut buf, Some(WalkCache::new(&mut slots)));
+            draw(&mut canvas);
+            skipped += canvas.skipped().count;
+            for y in band.row_range() {
+                for x in 0..w {
+                    out[y as usize * usize::from(w) + usize::from(x)] =
+                        buf.lin12(i32::from(x), y).unwrap()[0];
+                }
+            }
+        }
+        (out, skipped)
+    }
+
+    #[test]
+    fn a_recorded_outline_fills_to_the_bits_of_the_shape_drawn_directly() {
+        use crate::path::{LineJoin, Polyline, Segment, SegmentBuffer, StrokeStyle};
+        use crate::style::{Blend, FillRule, Opacity};
+        let mut rng = Lcg(0x5eed_0f5e_9b0f_f00d);
+        let mut next = |m: u32| rng.below(u64::from(m)) as i32;
+        for case in 0..40 {
+            // A chart-like polyline (some segments shorter than the width),
+            // and a disc.
+            let n = 3 + next(30) as usize;
+            let pts: std::vec::Vec<FinePoint> = (0..n)
+                .map(|k| FinePoint::new(1024 + k as i32 * next(4096), 2048 + next(44 * 1024)))
+                .collect();
+            let line = Polyline::new(&pts);
+            let join = [LineJoin::Miter, LineJoin::Round, LineJoin::Bevel][case % 3];
+            let cap = [LineCap::Butt, LineCap::Round, LineCap::Square][case / 3 % 3];
+            let style = StrokeStyle::new(200 + next(5000) as u32)
+                .with_join(join)
+                .with_cap(cap);
+            let disc = Circle::new(
+                FinePoint::new(next(64 * 1024), next(48 * 1024)),
+                1 + next(20_000) as u32,
+            );
+            let blend = if case % 4 == 3 {
+                Blend::Add
+            } else {
+                Blend::Over
+            };
+            let op = Opacity::from_ratio(2 + (case % 3) as u32, 4);
+            let mut store = [Segment::default(); 2048];
+            let mut stroke = SegmentBuffer::new(&mut store);
+            line.stroke(&style, &mut stroke).unwrap();
+            assert!(!stroke.overflowed());
+            let mut store2 = [Segment::default(); 1024];
+            let mut fill = SegmentBuffer::new(&mut store2);
+            disc.fill(&mut fill);
+            let direct = |c: &mut Canvas<'_, '_, 1>| {
+                c.stroke_shape(&line, &style, [3000], blend, op).unwrap();
+                c.fill_shape(&disc, [900], FillRule::EvenOdd, blend, op)
+                    .unwrap();
+            };
+            let recorded = |c: &mut Canvas<'_, '_, 1>| {
+                c.fill(&stroke, [3000], FillRule::NonZero, blend, op)
+                    .unwrap();
+                c.fill(&fill, [900], FillRule::EvenOdd, blend, op).unwrap();
+            };
+            let (whole, _) = frame(64, 48, direct);
+            assert!(
+                whole.iter().any(|&v| v != 300),
+                "case {case}: something is drawn"
+            );
+            for rows in [1, 3, 16, 48] {
+                assert_eq!(
+                    frame(64, rows, direct).0,
+                    whole,
+                    "case {case}, direct, {rows} rows"
+                );
+                assert_eq!(
+                    frame(64, rows, recorded).0,
+                    whole,
+                    "case {case}, recorded, {rows} rows"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn an_overflowed_recording_is_refused_and_the_rest_drawn() {
+        use crate::error::DrawError;
+        use crate::path::{Segment, SegmentBuffer};
+        use crate::style::{Blend, FillRule, Opacity};
+        let disc = Circle::new(FinePoint::new(20 * 1024, 20 * 1024), 15 * 1024);
+        let mut store = [Segment::default(); 8];
+        let mut short = SegmentBuffer::new(&mut store);
+        disc.fill(&mut short);
+        assert!(short.overflowed());
+        let (out, skipped) = frame(40, 8, |c| {
+            assert_eq!(
+                c.fill(
+                    &short,
+                    [4000],
+                    FillRule::NonZero,
+                    Blend::Over,
+                    Opacity::OPAQUE
+                ),
+                Err(DrawError::Incomplete)
+            );
+            c.fill_shape(
+                &disc,
+                [2000],
+                FillRule::NonZero,
+                Blend::Over,
+                Opacity::OPAQUE,
+            )
+            .unwrap();
+        });
+        // Every band refuses the recording (6 bands of 8 rows), as every
+        // band reports a vertex out of range; the disc itself is drawn.
+        assert_eq!(skipped, 6);
+        assert_eq!(out[20 * 40 + 20], 2000);
     }
 }

@@ -39,6 +39,14 @@ pub struct Segment {
 /// Collects segments into a caller-provided slice; what does not fit is
 /// counted, not stored (check [`overflowed`](Self::overflowed)).
 ///
+/// A shape recorded once per frame (a stroke, a path, a run of glyphs)
+/// can then be filled in every band from the buffer (a
+/// [`canvas::Outline`](crate::canvas::Outline), filled by the nonzero
+/// rule for a stroke): the band walks only the segments that cross its
+/// rows, instead of describing, flattening and stroking the shape again.
+/// The segments, their order and so the pixels are those of the shape
+/// drawn directly. 16 bytes a segment.
+///
 /// ```
 /// use softedge::geom::FinePoint;
 /// use softedge::path::{Rectangle, Segment, SegmentBuffer, Shape};
@@ -53,6 +61,10 @@ pub struct SegmentBuffer<'a> {
     store: &'a mut [Segment],
     len: usize,
     dropped: usize,
+    /// The corners of the box around the kept segments (meaningful when
+    /// `len > 0`).
+    lo: FinePoint,
+    hi: FinePoint,
 }
 
 impl<'a> SegmentBuffer<'a> {
@@ -62,7 +74,15 @@ impl<'a> SegmentBuffer<'a> {
             store,
             len: 0,
             dropped: 0,
+            lo: FinePoint::new(0, 0),
+            hi: FinePoint::new(0, 0),
         }
+    }
+
+    /// The box around every point of the kept segments, as its smallest
+    /// and largest corners; `None` when none is kept.
+    pub fn extent(&self) -> Option<(FinePoint, FinePoint)> {
+        (self.len > 0).then_some((self.lo, self.hi))
     }
 
     /// The segments kept, in the order received.
@@ -100,6 +120,13 @@ impl SegmentSink for SegmentBuffer<'_> {
         match self.store.get_mut(self.len) {
             Some(slot) => {
                 *slot = Segment { from, to };
+                if self.len == 0 {
+                    (self.lo, self.hi) = (from, from);
+                }
+                for p in [from, to] {
+                    self.lo = FinePoint::new(self.lo.x.min(p.x), self.lo.y.min(p.y));
+                    self.hi = FinePoint::new(self.hi.x.max(p.x), self.hi.y.max(p.y));
+                }
                 self.len += 1;
             }
             None => self.dropped = self.dropped.saturating_add(1),
@@ -179,8 +206,19 @@ mod tests {
             b.segment(FinePoint::new(k, 0), FinePoint::new(k, 1));
         }
         assert_eq!((b.segments().len(), b.dropped()), (2, 3));
+        // The box holds the kept segments only.
+        assert_eq!(
+            b.extent(),
+            Some((FinePoint::new(0, 0), FinePoint::new(1, 1)))
+        );
         b.clear();
         assert!(!b.overflowed() && b.segments().is_empty());
+        assert_eq!(b.extent(), None);
+        b.segment(FinePoint::new(-5, 7), FinePoint::new(3, -2));
+        assert_eq!(
+            b.extent(),
+            Some((FinePoint::new(-5, -2), FinePoint::new(3, 7)))
+        );
         let mut empty: [Segment; 0] = [];
         let mut b = SegmentBuffer::new(&mut empty);
         b.segment(FinePoint::new(0, 0), FinePoint::new(1, 1));

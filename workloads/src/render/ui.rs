@@ -23,7 +23,10 @@ use core::hint::black_box;
 use embedded_graphics::geometry::AngleUnit;
 use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::*;
-use embedded_graphics::primitives::{Arc, Circle, PrimitiveStyle, Rectangle};
+use embedded_graphics::primitives::{Arc, Circle, Polyline, PrimitiveStyle, Rectangle};
+use softedge::color::IntoLinear;
+use softedge::draw::AaShape;
+use softedge::path::{Segment, SegmentBuffer, Shape as _};
 use softedge::prelude::*;
 use softedge::render::Renderer as FrameRenderer;
 use softedge::tone::Curve;
@@ -68,6 +71,37 @@ pub fn gauge() -> Arc {
     )
 }
 
+/// Points of the line chart.
+pub const CHART_POINTS: usize = 60;
+/// The chart's stroke width, px.
+pub const CHART_STROKE: u32 = 3;
+
+/// A line chart: 60 points, 4 px apart from x = 2, a pseudo-random walk
+/// about y = 120 within 60..180 (integers only: the series is a `const`).
+pub const CHART: [Point; CHART_POINTS] = chart_points();
+
+const fn chart_points() -> [Point; CHART_POINTS] {
+    let mut p = [Point::zero(); CHART_POINTS];
+    let (mut y, mut seed) = (120i32, 12_345u32);
+    let mut k = 0;
+    while k < CHART_POINTS {
+        p[k] = Point::new(2 + 4 * k as i32, y);
+        seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12_345);
+        let step = ((seed >> 16) % 25) as i32 - 12;
+        y += step;
+        if y < 60 || y > 180 {
+            y -= 2 * step;
+        }
+        k += 1;
+    }
+    p
+}
+
+/// The line chart as an embedded-graphics polyline.
+pub fn chart() -> Polyline<'static> {
+    Polyline::new(&CHART)
+}
+
 const DISC_COLOR: Rgb565 = Rgb565::new(4, 20, 26);
 const GAUGE_COLOR: Rgb565 = Rgb565::new(26, 52, 8);
 
@@ -83,11 +117,25 @@ pub enum Shape {
     /// [`gauge`], stroked [`GAUGE_STROKE`] px, round caps
     /// (embedded-graphics has no caps: its arc keeps butt ends).
     GaugeRound,
+    /// [`chart`], stroked [`CHART_STROKE`] px, miter joins (e-g's
+    /// polyline joins), butt caps.
+    Chart,
+    /// The same chart stroked once per frame into a
+    /// [`SegmentBuffer`] and filled from it in every band
+    /// (embedded-graphics draws [`Chart`](Self::Chart) again).
+    ChartRecorded,
 }
 
 impl Shape {
     /// Every shape, in the order of the output.
-    pub const ALL: [Shape; 4] = [Shape::None, Shape::Disc, Shape::Gauge, Shape::GaugeRound];
+    pub const ALL: [Shape; 6] = [
+        Shape::None,
+        Shape::Disc,
+        Shape::Gauge,
+        Shape::GaugeRound,
+        Shape::Chart,
+        Shape::ChartRecorded,
+    ];
 
     /// The name printed in the output.
     pub fn name(self) -> &'static str {
@@ -96,6 +144,8 @@ impl Shape {
             Shape::Disc => "circle",
             Shape::Gauge => "gauge",
             Shape::GaugeRound => "gauge_round",
+            Shape::Chart => "chart",
+            Shape::ChartRecorded => "chart_recorded",
         }
     }
 }
@@ -103,10 +153,35 @@ impl Shape {
 /// A softedge frame of `shape` alone, 16-row bands, into `bufs.out16`.
 #[inline(never)]
 pub fn softedge_shape(shape: Shape, bufs: &mut Buffers<'_>) -> Result<(), FrameError> {
+    let out = &mut *bufs.out16;
+    let mut sink = BandStream::new(out, u32::from(FRAME), u32::from(FRAME));
+    let parts = Buffers {
+        acc: &mut *bufs.acc,
+        cover: &mut *bufs.cover,
+        out16: &mut [],
+        out8: &mut *bufs.out8,
+        slots3: &mut *bufs.slots3,
+        slots1: &mut *bufs.slots1,
+    };
+    shape_into(shape, parts, &mut sink)?;
+    black_box(sink.pixels());
+    Ok(())
+}
+
+/// Segments the recorded chart may have (its stroke has 228).
+pub const CHART_SEGMENTS: usize = 256;
+
+/// [`softedge_shape`] into any display.
+fn shape_into<D>(shape: Shape, bufs: Buffers<'_>, target: &mut D) -> Result<(), FrameError>
+where
+    D: DrawTarget<Color = Rgb565> + OriginDimensions,
+{
+    if shape == Shape::ChartRecorded {
+        return chart_recorded(bufs, target);
+    }
     let mut r = renderer(bufs.acc, bufs.cover, bufs.slots3)?;
-    let mut sink = BandStream::new(&mut *bufs.out16, u32::from(FRAME), u32::from(FRAME));
     let report = r
-        .render(&mut sink, &RGB565, [0; 3], |c| match shape {
+        .render(target, &RGB565, [0; 3], |c| match shape {
             Shape::None => Ok(()),
             Shape::Disc => disc().into_styled(AaStyle::with_fill(DISC_COLOR)).draw(c),
             Shape::Gauge => gauge()
@@ -115,10 +190,51 @@ pub fn softedge_shape(shape: Shape, bufs: &mut Buffers<'_>) -> Result<(), FrameE
             Shape::GaugeRound => gauge()
                 .into_styled(AaStyle::with_stroke(GAUGE_COLOR, GAUGE_STROKE).cap(LineCap::Round))
                 .draw(c),
+            Shape::Chart => chart().into_styled(chart_style()).draw(c),
+            // Drawn by `chart_recorded`.
+            Shape::ChartRecorded => Ok(()),
         })
         .map_err(|_| FrameError)?;
     black_box(report);
-    black_box(sink.pixels());
+    Ok(())
+}
+
+/// The chart's style: [`CHART_STROKE`] px, miter joins, butt caps.
+fn chart_style() -> AaStyle<'static, Rgb565> {
+    AaStyle::with_stroke(GAUGE_COLOR, CHART_STROKE)
+}
+
+/// The chart stroked once into a segment buffer (on the stack, 16 bytes
+/// a segment), then filled from it in every band.
+#[inline(never)]
+fn chart_recorded<D>(bufs: Buffers<'_>, target: &mut D) -> Result<(), FrameError>
+where
+    D: DrawTarget<Color = Rgb565> + OriginDimensions,
+{
+    let mut store = [Segment::default(); CHART_SEGMENTS];
+    let mut outline = SegmentBuffer::new(&mut store);
+    let style = chart_style();
+    chart()
+        .shape()
+        .stroke(&style.stroke, &mut outline)
+        .map_err(|_| FrameError)?;
+    if outline.overflowed() {
+        return Err(FrameError);
+    }
+    let color = GAUGE_COLOR.into_linear();
+    let mut r = renderer(bufs.acc, bufs.cover, bufs.slots3)?;
+    let report = r
+        .render(target, &RGB565, [0; 3], |c| {
+            c.fill(
+                &outline,
+                color,
+                FillRule::NonZero,
+                style.blend,
+                style.opacity,
+            )
+        })
+        .map_err(|_| FrameError)?;
+    black_box(report);
     Ok(())
 }
 
@@ -135,6 +251,9 @@ pub fn eg_shape<D: DrawTarget<Color = Rgb565>>(shape: Shape, target: &mut D) {
             .draw(target),
         Shape::Gauge | Shape::GaugeRound => gauge()
             .into_styled(PrimitiveStyle::with_stroke(GAUGE_COLOR, GAUGE_STROKE))
+            .draw(target),
+        Shape::Chart | Shape::ChartRecorded => chart()
+            .into_styled(PrimitiveStyle::with_stroke(GAUGE_COLOR, CHART_STROKE))
             .draw(target),
     };
 }
@@ -359,6 +478,29 @@ mod tests {
                 slots1: &mut self.slots1,
             }
         }
+    }
+
+    #[test]
+    fn the_recorded_chart_is_the_chart_bit_for_bit() {
+        let mut s = Storage::new();
+        let mut frames = [Screen(vec![0; 240 * 240]), Screen(vec![0; 240 * 240])];
+        for (shape, screen) in [Shape::Chart, Shape::ChartRecorded]
+            .into_iter()
+            .zip(&mut frames)
+        {
+            shape_into(shape, s.bufs(), screen).unwrap();
+        }
+        assert!(frames[0].0.iter().filter(|&&p| p != 0).count() > 500);
+        let mut store = [Segment::default(); CHART_SEGMENTS];
+        let mut outline = SegmentBuffer::new(&mut store);
+        chart()
+            .shape()
+            .stroke(&chart_style().stroke, &mut outline)
+            .unwrap();
+        // 228 today: the buffer's 256 leave a margin, and this says when
+        // the stroker's output grows past it.
+        assert!((200..=240).contains(&outline.segments().len()));
+        assert!(frames[0].0 == frames[1].0);
     }
 
     #[test]
