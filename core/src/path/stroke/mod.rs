@@ -704,6 +704,32 @@ mod tests {
     }
 
     #[test]
+    fn a_dashed_closed_contour_whose_last_gap_ends_at_the_start_keeps_its_first_dash() {
+        // 40 px around, 4 on, 4 off from the start: the last gap, [36, 40),
+        // ends exactly where the contour began, so the first dash (held
+        // for a join that never comes) must get its start cap after all.
+        // Offset 4 px: the mirror case, the contour starts in a gap and its
+        // last dash, [36, 40), ends at the start with nothing held.
+        let pattern = [4096];
+        for offset in [0, 4096] {
+            let st = StrokeStyle::new(1024).with_dash(Dash::new(&pattern, offset));
+            let t = run(&st, |s| {
+                s.move_to(p(0, 0));
+                s.line_to(p(10, 0));
+                s.line_to(p(10, 10));
+                s.line_to(p(0, 10));
+                s.close();
+            });
+            assert!(t.closed(), "offset {offset}");
+            // Five dashes of 4 x 1 px, 4 px² each, those through a corner
+            // too (the mitered outer square of 1/4 px² is the inner square
+            // the legs share). Before the fix, offset 0 dropped the dash at
+            // the start: 16 px² and an unclosed outline.
+            assert_eq!(t.area2, 2 * 5 * 4 * 1024 * 1024, "offset {offset}");
+        }
+    }
+
+    #[test]
     fn a_closed_contour_has_no_caps() {
         let sq = |cap| {
             run(&StrokeStyle::new(2048).with_cap(cap), |s| {

@@ -258,7 +258,11 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
     /// Ends the contour: with `close`, the current run's last piece is
     /// joined to the held first piece; otherwise runs end with caps.
     pub fn end_contour(&mut self, close: bool) {
-        if close && !self.pending_held {
+        // Join only when both ends are there: a dash pattern whose last
+        // gap ends at the start leaves nothing pending, and a contour whose
+        // first run began in a gap holds nothing; the fall-through below
+        // caps whichever piece there is (taking neither before the test).
+        if close && !self.pending_held && self.pending.is_some() && self.held.is_some() {
             if let (Some(mut a), Some(mut f)) = (self.pending.take(), self.held.take()) {
                 self.join_pieces(&mut a, &mut f, JoinKind::Path);
                 self.sides_of(&a);
