@@ -408,3 +408,87 @@ fn whole_pixel_rectangles_match_embedded_graphics_exactly() {
         assert_eq!(aa.lin12, aliased.lin12, "{align:?} {width}");
     }
 }
+
+/// "Add" honours the fill rule and the stroke's "one shape": an outline
+/// wound many times covers a pixel once (it used to multiply the colour
+/// by the winding number, overflowing `i32` in debug builds and wrapping
+/// to garbage in release), and a stroke whose pieces overlap (a U-turn)
+/// adds its colour once where they do. Reference: a 4x4-px square at
+/// whole pixels covers its 16 pixels fully and nothing else; on a black
+/// background, add and opaque over give the same accumulator.
+#[test]
+fn add_covers_a_pixel_once_whatever_the_winding() {
+    let p = |x, y| FinePoint::from_px(x, y);
+    let square = [p(2, 2), p(6, 2), p(6, 6), p(2, 6)];
+    let wound: Vec<FinePoint> = (0..9).flat_map(|_| square).collect();
+    for rule in [FillRule::NonZero, FillRule::EvenOdd] {
+        let f = render_canvas::<1>(8, 8, 3, [0], 0, |c| {
+            c.fill(&Contour(&wound), [3000], rule, Blend::Add, Opacity::OPAQUE)
+                .unwrap();
+        });
+        for y in 0..8 {
+            for x in 0..8 {
+                let inside = (2..6).contains(&x) && (2..6).contains(&y);
+                // Wound 9 times: odd, so even-odd fills it too.
+                let want = if inside { 3000 } else { 0 };
+                assert_eq!(f.lin_at(x, y), [want], "{rule:?} ({x}, {y})");
+            }
+        }
+    }
+    // Wound twice: even-odd leaves it empty.
+    let twice: Vec<FinePoint> = (0..2).flat_map(|_| square).collect();
+    let f = render_canvas::<1>(8, 8, 3, [0], 0, |c| {
+        c.fill(
+            &Contour(&twice),
+            [3000],
+            FillRule::EvenOdd,
+            Blend::Add,
+            Opacity::OPAQUE,
+        )
+        .unwrap();
+    });
+    assert!(f.lin12.iter().all(|&v| v == [0]));
+    // A stroke with a U-turn and round joins and caps, and a disc stroked
+    // wider than its diameter (its pieces overlap everywhere): add on
+    // black equals opaque over on black, bit for bit in the accumulator.
+    let uturn = [p(3, 10), p(30, 12), p(4, 14), p(28, 20)];
+    let line = softedge::path::Polyline::new(&uturn);
+    let thick = softedge::path::StrokeStyle::new(5 * 1024)
+        .with_join(LineJoin::Round)
+        .with_cap(LineCap::Round);
+    let disc = softedge::path::Circle::new(FinePoint::new(20 * 1024 + 300, 12 * 1024), 3 * 1024);
+    let wide = softedge::path::StrokeStyle::new(9 * 1024);
+    let draw = |blend| {
+        render_canvas::<1>(40, 24, 5, [0], 0, move |c| {
+            c.stroke_shape(&line, &thick, [2500], blend, Opacity::OPAQUE)
+                .unwrap();
+        })
+        .raw
+        .iter()
+        .zip(
+            render_canvas::<1>(40, 24, 5, [0], 0, move |c| {
+                c.stroke_shape(&disc, &wide, [2500], blend, Opacity::OPAQUE)
+                    .unwrap();
+            })
+            .raw
+            .iter(),
+        )
+        .map(|(a, b)| (a[0], b[0]))
+        .collect::<Vec<_>>()
+    };
+    assert_eq!(draw(Blend::Add), draw(Blend::Over));
+    // A mesh is walked as one outline in its own orientation: one whose
+    // triangles all lie on top of each other (20 times the same square's
+    // two halves) adds its colour once, like any shape, instead of
+    // overflowing the product of colour and coverage.
+    let pts = [p(2, 2), p(6, 2), p(6, 6), p(2, 6)];
+    let tris: Vec<[u16; 3]> = (0..20).flat_map(|_| [[0, 1, 2], [0, 2, 3]]).collect();
+    for colors in [MeshColors::Flat([4000]), MeshColors::PerPoint(&[[4000]; 4])] {
+        let f = render_canvas::<1>(8, 8, 3, [0], 0, |c| {
+            c.fill_mesh(&pts, &tris, colors, Blend::Add, Opacity::OPAQUE)
+                .unwrap();
+        });
+        assert_eq!(f.lin_at(3, 3), [4000]);
+        assert_eq!(f.lin_at(1, 1), [0]);
+    }
+}

@@ -19,7 +19,7 @@
 //! | attenuate | store 0 | 1 multiply per channel |
 //!
 //! A partial pixel's product `v * k / 2^16` is two 32-bit multiplies (the
-//! operand split at bit 14, see [`mul_share`]), within one unit, 1/65536 of
+//! operand split in two, see [`mul_share`]), within one unit, 1/65536 of
 //! a level, of the exact `acc (1 - k) + I k`. The sweep clears what it
 //! reads, for the next shape.
 
@@ -33,9 +33,7 @@ const _: () = assert!(PLANE_FRAC == COVER_BITS);
 
 /// Bits of an [`Opacity`].
 const ALPHA_BITS: u32 = 12;
-/// Where [`mul_share`] splits its operand.
-const LO_BITS: u32 = 14;
-/// Largest operand of [`mul_share`]: `|v| * 2^16 >> 14` stays below 2^31.
+/// Largest operand of [`mul_share`]: `(|v| >> 16) * 2^16` stays below 2^31.
 const V_LIMIT: i32 = (1 << 29) - 1;
 
 /// What colour a shape's pixels get.
@@ -68,9 +66,9 @@ pub(crate) enum ComposeOp {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Coverage {
     /// A simple outline of known orientation (`+1` or `-1`, the sign of
-    /// its area): the integral times it, unclamped, so that shapes sharing
-    /// an edge add up exactly (what `Blend::Add` needs); over clamps it to
-    /// `0..=1` px.
+    /// its area): the integral times it, linear, so that shapes sharing
+    /// an edge add up exactly (what `Blend::Add` needs); the sweep limits
+    /// it to `0..=1` px for over, `-1..=1` px for add.
     Signed(i32),
     /// Any outline, by a fill rule.
     Rule(FillRule),
@@ -186,17 +184,23 @@ impl<const C: usize> BandBuffer<'_, C> {
             if s == 0 {
                 return 0;
             }
-            // A convex combination needs a share within the pixel.
-            let s = if convex { s.clamp(0, COVER_ONE) } else { s };
+            // A convex combination needs a share within the pixel; add
+            // takes at most a whole pixel either way (a mesh whose
+            // triangles overlap adds its colour once, as any shape), which
+            // keeps every product below in `i32`.
+            let s = if convex {
+                s.clamp(0, COVER_ONE)
+            } else {
+                s.clamp(-COVER_ONE, COVER_ONE)
+            };
             let k = if opaque {
                 if s == COVER_ONE {
                     return WHOLE;
                 }
                 s
-            } else if s.unsigned_abs() < 1 << (31 - ALPHA_BITS) {
-                (s * a4096) >> ALPHA_BITS
             } else {
-                ((i64::from(s) * i64::from(a4096)) >> ALPHA_BITS) as i32
+                // |s| <= 2^16, a4096 <= 2^12.
+                (s * a4096) >> ALPHA_BITS
             };
             if k == 0 {
                 SKIP
@@ -625,7 +629,7 @@ impl<const C: usize> SpanOp<C> for Attenuate {
 
 /// `floor(v * k / 2^16)` exactly, for a share `|k| <= 2^16`, in 32-bit
 /// multiplies:
-/// `v` is split at bit 14, so each product stays below `2^31` (`v` is
+/// `v` is split at bit 16, so each product stays within 32 bits (`v` is
 /// limited to `±2^29` first, two full scales beyond any intensity).
 #[inline]
 pub(super) fn mul_share(v: i32, k: i32) -> i32 {
@@ -641,15 +645,16 @@ pub(super) fn mul_share(v: i32, k: i32) -> i32 {
     mul_share_unlimited(v, k)
 }
 
-/// [`mul_share`] for `|v| <= 2^29 - 1`, `|k| <= 2^16`: the two products.
+/// [`mul_share`] for `|v| <= 2^29 - 1`, `|k| <= 2^16`: `v` split at bit
+/// 16, `v = h 2^16 + l` with `0 <= l < 2^16`, so `v k / 2^16 = h k + l k /
+/// 2^16`, where `|h k| <= 2^29` and `l k < 2^32` unsigned (`0 <= k <=
+/// 2^16`; a negative share is the product of the negated operands): two
+/// multiplies and a shift, the floor exact.
 #[inline]
 fn mul_share_unlimited(v: i32, k: i32) -> i32 {
-    let (hi, lo) = (v >> LO_BITS, v & ((1 << LO_BITS) - 1));
-    // v k / 2^16 = (hi k) / 2^2 + (lo k) / 2^16: carry hi k's low bits
-    // into the second quotient so the result is the floor of the whole.
-    let (a, b) = (hi * k, lo * k);
-    const UP: u32 = COVER_BITS - LO_BITS;
-    (a >> UP) + ((((a & ((1 << UP) - 1)) << LO_BITS) + b) >> COVER_BITS)
+    let (v, k) = if k < 0 { (-v, -k) } else { (v, k) };
+    let l = (v as u32 & ((1 << COVER_BITS) - 1)) * k as u32;
+    (v >> COVER_BITS) * k + (l >> COVER_BITS) as i32
 }
 
 /// The plane at frame pixel `(x, y)`, in accumulator units (span set-up:
@@ -723,8 +728,28 @@ mod tests {
             77_777,
             (1 << 29) - 1,
         ] {
-            for k in [1, 2, 4095, 32768, 65535, -65535, -3] {
+            for k in [0, 1, 2, 4095, 32768, 65535, 65536, -65536, -65535, -3] {
                 let exact = (i64::from(v) * i64::from(k)).div_euclid(1 << 16);
+                assert_eq!(i64::from(mul_share(v, k)), exact, "{v} * {k}");
+            }
+        }
+        // And a walk over both operands' whole ranges, the low halves of
+        // `v` at their extremes included.
+        let mut rng = crate::path::testing::Lcg(0x51a2_e0f5);
+        for case in 0..200_000u32 {
+            let v = (rng.below(1 << 30) as i32) - (1 << 29);
+            let v = match case % 4 {
+                0 => v | 0xffff,
+                1 => v & !0xffff,
+                _ => v,
+            };
+            let k = (rng.below((1 << 17) + 1) as i32) - (1 << 16);
+            let exact = (i64::from(v) * i64::from(k)).div_euclid(1 << 16);
+            let exact = exact.clamp(-(1 << 31), (1 << 31) - 1);
+            let v_lim = v.clamp(-V_LIMIT, V_LIMIT);
+            let exact_lim = (i64::from(v_lim) * i64::from(k)).div_euclid(1 << 16);
+            assert_eq!(i64::from(mul_share(v, k)), exact_lim, "{v} * {k}");
+            if v == v_lim {
                 assert_eq!(i64::from(mul_share(v, k)), exact, "{v} * {k}");
             }
         }

@@ -465,41 +465,16 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             // A gradient of one colour is that flat colour.
             Fill::Gradient(g) => g.flat().map_or(Paint::Gradient(g), Paint::Flat),
         };
-        let Some(coverage) = self.coverage_of(outline, rule, blend) else {
-            return Ok(());
-        };
+        // By the fill rule in both blends: an outline wound several times
+        // (or a stroke whose pieces overlap) covers a pixel once. Where the
+        // outline is simple, a pixel's winding integral is its share
+        // already, so shapes sharing an edge still add up to the whole.
+        let coverage = Coverage::Rule(rule);
         let op = match blend {
             Blend::Over => ComposeOp::Over(opacity),
             Blend::Add => ComposeOp::Add(opacity),
         };
         self.fill_outline(serial, 0, outline, coverage, &paint, op)
-    }
-
-    /// How an outline's winding integral becomes coverage: by the fill
-    /// rule for over; for add, linearly (the integral times the outline's
-    /// orientation), so that shapes sharing an edge add up to the whole
-    /// exactly (`None`: the outline has no area, or misses the band).
-    fn coverage_of<O: Outline + ?Sized>(
-        &self,
-        outline: &O,
-        rule: FillRule,
-        blend: Blend,
-    ) -> Option<Coverage> {
-        if blend == Blend::Over {
-            return Some(Coverage::Rule(rule));
-        }
-        if !outline.bounds().is_some_and(|b| self.touches(&b)) {
-            return None;
-        }
-        let mut area2: i128 = 0;
-        outline.segments(|p, q| {
-            area2 += i128::from(i64::from(p.x) * i64::from(q.y) - i64::from(q.x) * i64::from(p.y));
-        });
-        // Positive coverage for the order `orient` gives a triangle.
-        match area2.signum() {
-            0 => None,
-            s => Some(Coverage::Signed(-s as i32)),
-        }
     }
 
     /// Fills a triangle with a linear colour per vertex (Gouraud), or one
