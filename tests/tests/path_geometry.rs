@@ -666,3 +666,56 @@ mod embedded_graphics_conventions {
         }
     }
 }
+
+/// Radii beyond `MAX_RADIUS` (the documented limit) are limited to it,
+/// centre and arc together: a rounded rectangle with larger radii is the
+/// one with `MAX_RADIUS` corners, segment for segment, filled and
+/// stroked; and a stroke whose outer corners grow past the limit stays
+/// a ring of non-negative area. (The fuzzer found a stroked rounded
+/// rectangle far beyond the coordinate range whose arcs had been limited
+/// but not their centres: its contours crossed, and their area came out
+/// at -5 million px².)
+#[test]
+fn rounded_corners_beyond_the_radius_limit_are_limited_to_it() {
+    use softedge::path::MAX_RADIUS;
+    let m = MAX_RADIUS;
+    // The top-left corner at the range's (its cut reaches 0.29 r into
+    // it, so the range sees the corners), the others far outside.
+    let l = softedge::geom::FINE_LIMIT;
+    let rect = Rectangle::new(FinePoint::new(-l, -l), 6 * m, 7 * m);
+    let big = RoundedRectangle::new(rect, CornerRadii::uniform(2 * m + 12_345));
+    let limited = RoundedRectangle::new(rect, CornerRadii::uniform(m));
+    let style = StrokeStyle::new(40 * 1024);
+    for stroke in [false, true] {
+        let (mut a, mut b) = (Segments::new(), Segments::new());
+        if stroke {
+            big.stroke(&style, &mut a).unwrap();
+            limited.stroke(&style, &mut b).unwrap();
+        } else {
+            big.fill(&mut a);
+            limited.fill(&mut b);
+        }
+        assert!(a.is_closed_in_range() && !a.is_empty());
+        assert_eq!(a.segs, b.segs, "stroke: {stroke}");
+        assert!(a.shoelace() >= 0.0);
+    }
+    // The fuzzer's case: corners of every kind, far out of range.
+    let rr = RoundedRectangle::new(
+        Rectangle::new(
+            FinePoint::new(-2_098_599, 5237),
+            2_264_817_684,
+            1_448_498_822,
+        ),
+        CornerRadii {
+            top_left: (511, 5_765_839),
+            top_right: (1536, 1_611_924_223),
+            bottom_right: (14_726_534, 0),
+            bottom_left: (28_766, 0),
+        },
+    );
+    let mut s = Segments::new();
+    rr.stroke(&StrokeStyle::new(14_790), &mut s).unwrap();
+    assert!(s.is_closed_in_range());
+    // Within a square pixel of slack for the grid rounding of cuts.
+    assert!(s.shoelace() > -1.0, "{}", s.shoelace());
+}

@@ -196,9 +196,19 @@ impl RoundedRectangle {
         Self { rect, corner_radii }
     }
 
-    /// The radii in use: clamped to the sides (see [`CornerRadii::clamped`]).
+    /// The radii in use: clamped to the sides (see
+    /// [`CornerRadii::clamped`]), then each limited to
+    /// [`MAX_RADIUS`](crate::path::MAX_RADIUS).
     pub fn radii(&self) -> CornerRadii {
-        self.corner_radii.clamped(self.rect.width, self.rect.height)
+        let max = crate::path::MAX_RADIUS;
+        let c = self.corner_radii.clamped(self.rect.width, self.rect.height);
+        let lim = |(x, y): (u32, u32)| (x.min(max), y.min(max));
+        CornerRadii {
+            top_left: lim(c.top_left),
+            top_right: lim(c.top_right),
+            bottom_right: lim(c.bottom_right),
+            bottom_left: lim(c.bottom_left),
+        }
     }
 
     /// The outline in 1/256 fine units, corners clockwise from the top
@@ -261,6 +271,10 @@ impl Outline {
         let corner = self.corners.get(k).copied().unwrap_or(Corner::Round(0, 0));
         match corner {
             Corner::Round(rx, ry) if rx > 0 && ry > 0 => {
+                // Limited as the frame limits them, before the centre is
+                // placed (a stroke's outer corners grow past the limit).
+                let max = i64::from(crate::path::MAX_RADIUS) << 8;
+                let (rx, ry) = (rx.min(max), ry.min(max));
                 let frame =
                     EllipseFrame::with_q8(Pt::new(cx + sx * rx, cy + sy * ry), rx, ry, UNIT_X);
                 if reverse {
