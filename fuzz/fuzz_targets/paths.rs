@@ -359,23 +359,6 @@ impl Visit for Checker<'_> {
             item.geometry,
             item.paint
         );
-        // Segments clamped to the coordinate range are numbered apart from
-        // what a window leaves out (`emit` sends a clamped segment as 0 to
-        // 5 pieces, a window's jump counts it as one). A known limit that
-        // costs walk-cache misses only (a cached walk is checked against
-        // its segment's ends before use), for outlines beyond the range:
-        // the numbering is checked for outlines within the range only,
-        // those whose description lies in it and that send nothing on its
-        // border.
-        let mut m = Measure::default();
-        shape.describe(&mut m);
-        let on_border = |p: &FinePoint| p.x.abs() == FINE_LIMIT || p.y.abs() == FINE_LIMIT;
-        let clamped = m.beyond
-            || full
-                .events
-                .iter()
-                .flatten()
-                .any(|(a, b)| on_border(a) || on_border(b));
         for &w in self.windows {
             let mut win = Record::new(Some(w));
             let r = self.describe(shape, item, &mut win);
@@ -383,9 +366,6 @@ impl Visit for Checker<'_> {
                 continue;
             }
             assert_eq!(r, result, "the stroke's result differs in window {w:?}");
-            if clamped {
-                continue;
-            }
             assert!(
                 win.events.len() <= full.events.len(),
                 "window {w:?}: {} segments numbered, {} without a window",
@@ -421,8 +401,6 @@ const DASH_COST_LIMIT: f64 = 300_000.0;
 /// curves' length) and its number of contours, at most.
 #[derive(Default)]
 struct Measure {
-    /// A point lies beyond the coordinate range.
-    beyond: bool,
     len: f64,
     contours: f64,
     start: (f64, f64),
@@ -431,7 +409,6 @@ struct Measure {
 
 impl Measure {
     fn to(&mut self, p: FinePoint) {
-        self.beyond |= !p.in_range();
         let q = (f64::from(p.x), f64::from(p.y));
         self.len += (q.0 - self.at.0).hypot(q.1 - self.at.1);
         self.at = q;
@@ -440,7 +417,6 @@ impl Measure {
 
 impl PathSink for Measure {
     fn move_to(&mut self, p: FinePoint) {
-        self.beyond |= !p.in_range();
         self.contours += 1.0;
         self.at = (f64::from(p.x), f64::from(p.y));
         self.start = self.at;

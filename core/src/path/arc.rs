@@ -359,16 +359,28 @@ const PIECE: u32 = 8;
 /// with the Q30 products' floors). The slack `a D^2 pi^2 / 2^64 + 16`
 /// (`D` in binary units, `pi^2 < 10`) is `a D_rad^2 / 4 + 16`, above
 /// their sum.
+///
+/// `None` (no piece is jumped) also when a vertex could lie outside the
+/// coordinate range: its segments are then clamped to the range and take
+/// [`CLAMPED_NUMBERS`](super::segment::CLAMPED_NUMBERS) numbers each, not
+/// the one a jump counts. A vertex lies within `a / sinc(d) + 2 <= 9 a / 8
+/// + 2` fine units of the centre (`d <= pi/4`).
 fn piece_slack(frame: &EllipseFrame, span: i64) -> Option<i32> {
     let span = span.unsigned_abs();
     if span > (TURN / 4) as u64 {
         return None;
     }
+    let a = frame.major().clamp(0, i64::from(MAX_RADIUS));
+    let reach = a + a / 8 + 4;
+    let (cx, cy) = (frame.c_q8.x >> 8, frame.c_q8.y >> 8);
+    let limit = i64::from(crate::geom::FINE_LIMIT);
+    if cx.abs() + 1 + reach > limit || cy.abs() + 1 + reach > limit {
+        return None;
+    }
     // (span >> 16) + 1 <= 2^14 + 1; its square times 10 a (a <= 2^23):
     // below 2^55.
     let d = (span >> 16) + 1;
-    let a = frame.major().clamp(0, i64::from(MAX_RADIUS)) as u64;
-    Some(((d * d * 10 * a) >> 32) as i32 + 16)
+    Some(((d * d * 10 * a as u64) >> 32) as i32 + 16)
 }
 
 /// A cheap estimate of a vertex's y on an unrotated ellipse, from the

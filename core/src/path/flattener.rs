@@ -17,7 +17,7 @@
 use crate::geom::{FinePoint, PathSink};
 
 use super::bezier::{cubic_at, cubic_count, quad_at, quad_count};
-use super::segment::{Contour, SegmentSink};
+use super::segment::{in_square, Contour, SegmentSink};
 use super::vector::Pt;
 use super::Tolerance;
 
@@ -72,12 +72,20 @@ impl<S: SegmentSink + ?Sized> Flattener<'_, S> {
     /// points, and each flattened point is a point of the curve rounded to
     /// the grid (within a fine unit), so none of its segments meets the
     /// window and the curve is jumped over, its segments counted.
+    ///
+    /// Only a curve whose control points lie in the range square is
+    /// jumped: its segments are then sent unclamped, one number each,
+    /// which is what the jump counts (a clamped one takes
+    /// [`CLAMPED_NUMBERS`](super::segment::CLAMPED_NUMBERS)).
     fn misses_window(&self, q: &[Pt]) -> bool {
         let Some((lo, hi)) = self.out.sink.window() else {
             return false;
         };
         let (mut ylo, mut yhi) = (i64::MAX, i64::MIN);
         for p in q {
+            if !in_square(*p) {
+                return false;
+            }
             ylo = ylo.min(p.y);
             yhi = yhi.max(p.y);
         }
@@ -216,6 +224,63 @@ mod tests {
             jumped += whole.segs.len() - culled.segs.len();
         }
         assert!(jumped > 10_000, "{jumped}");
+    }
+
+    /// The same beyond the coordinate range, where segments are clamped
+    /// to it (sent as up to five pieces): numbers do not depend on the
+    /// window there either, for curves and for circles (the fuzzer found a
+    /// circle of radius 2 100 px numbered 1 592 segments whole and 1 584
+    /// in a window).
+    #[test]
+    fn clamped_segments_keep_their_numbers_in_any_window() {
+        use crate::path::{Circle, Shape};
+        let mut rng = Lcg(0x77aa_0913_5eed_c0de);
+        let mut next = |m: i64| rng.below(m as u64) as i64;
+        let limit = crate::geom::FINE_LIMIT;
+        for case in 0..600 {
+            let mut pts = [FinePoint::default(); 10];
+            for p in pts.iter_mut() {
+                *p = FinePoint::new(
+                    (next(6 << 20) - (3 << 20)) as i32,
+                    (next(6 << 20) - (3 << 20)) as i32,
+                );
+            }
+            let y0 = (next(4 << 20) - (2 << 20)) as i32;
+            let w = (y0, y0 + 1 + next(60_000) as i32);
+            let circle = Circle::new(
+                FinePoint::new(pts[0].x / 4, pts[0].y / 4),
+                limit as u32 / 2 + next(1 << 21) as u32,
+            );
+            let run = |window| {
+                let mut n = Numbering {
+                    window,
+                    next: 0,
+                    segs: std::vec::Vec::new(),
+                };
+                if case % 2 == 0 {
+                    let mut f = Flattener::new(&mut n);
+                    f.move_to(pts[0]);
+                    f.quad_to(pts[1], pts[2]);
+                    f.cubic_to(pts[3], pts[4], pts[5]);
+                    f.line_to(pts[6]);
+                    f.cubic_to(pts[7], pts[8], pts[9]);
+                    f.finish();
+                } else {
+                    circle.fill(&mut n);
+                }
+                n
+            };
+            let (whole, culled) = (run(None), run(Some(w)));
+            let meets = |n: &Numbering| -> std::vec::Vec<_> {
+                n.segs
+                    .iter()
+                    .copied()
+                    .filter(|(_, a, b)| a.y.max(b.y) >= w.0 && a.y.min(b.y) <= w.1)
+                    .collect()
+            };
+            assert_eq!(whole.next, culled.next, "case {case}");
+            assert_eq!(meets(&whole), meets(&culled), "case {case}");
+        }
     }
 
     #[test]

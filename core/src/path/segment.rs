@@ -99,23 +99,39 @@ impl<S: SegmentSink + ?Sized> SegmentSink for &mut S {
 /// The range square's half side, in fine units.
 const L: i64 = FINE_LIMIT as i64;
 
+/// The numbers a segment leaving the range square takes: its clamped
+/// pieces (up to five: four cuts), the rest counted as skipped.
+pub(crate) const CLAMPED_NUMBERS: u32 = 5;
+
 /// Sends the segment `a -> b` to `sink`, clamped to the range square (see
-/// the module doc); zero-length pieces are dropped.
+/// the module doc); zero-length pieces are dropped. A segment within the
+/// square takes one number of the sink's count (sent, or skipped when it
+/// has no length), one leaving it [`CLAMPED_NUMBERS`] (pieces sent, the
+/// rest skipped), so that the numbers of what follows do not depend on
+/// how it was cut.
 pub(crate) fn emit<S: SegmentSink + ?Sized>(sink: &mut S, a: Pt, b: Pt) {
     if a == b {
         sink.skipped(1);
         return;
     }
-    let inside = |p: Pt| p.x.abs() <= L && p.y.abs() <= L;
-    if inside(a) && inside(b) {
+    if in_square(a) && in_square(b) {
         sink.segment(a.to_fine(), b.to_fine());
         return;
     }
+    let mut sent = 0;
     clip_to_square(a, b, L, |p, q| {
         if p != q {
             sink.segment(p.to_fine(), q.to_fine());
+            sent += 1;
         }
     });
+    sink.skipped(CLAMPED_NUMBERS - sent);
+}
+
+/// `p` lies in the range square (its segments are sent unclamped).
+#[inline]
+pub(crate) fn in_square(p: Pt) -> bool {
+    p.x.abs() <= L && p.y.abs() <= L
 }
 
 /// Cuts `a -> b` where it crosses `x = +-half` and `y = +-half` and gives
