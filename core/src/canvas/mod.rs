@@ -468,7 +468,11 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         // By the fill rule in both blends: an outline wound several times
         // (or a stroke whose pieces overlap) covers a pixel once. Where the
         // outline is simple, a pixel's winding integral is its share
-        // already, so shapes sharing an edge still add up to the whole.
+        // already (but for a unit or two of the edges' floors where it is
+        // nearly empty, which the rule takes by magnitude), so shapes
+        // sharing an edge add up to the whole (`shapes_render.rs`: a
+        // polygon cut along a diagonal, raw bits). Triangles and meshes
+        // keep the linear integral (`Coverage::Signed`).
         let coverage = Coverage::Rule(rule);
         let op = match blend {
             Blend::Over => ComposeOp::Over(opacity),
