@@ -28,7 +28,10 @@ pub enum Blend {
     Over,
     /// Seed 000's accumulation, `acc += (I - background) c α`: exact for
     /// disjoint visible surfaces (what hidden-surface removal gives) and for
-    /// meshes drawn triangle by triangle.
+    /// meshes drawn triangle by triangle. A path's, shape's or stroke's
+    /// coverage `c` is its fill rule's, as in over (a contour wound
+    /// several times adds once); a pixel takes at most one whole coverage
+    /// per shape.
     Add,
 }
 
