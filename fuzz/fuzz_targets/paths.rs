@@ -25,7 +25,7 @@ use softedge::path::{
     StrokeStyle, Tolerance, MAX_RADIUS, MAX_STROKE_WIDTH,
 };
 use softedge::style::{Blend, FillRule, Opacity};
-use softedge::{BandBuffer, PixelModel, RenderStyle};
+use softedge::{BandBuffer, RenderStyle};
 use softedge_fuzz::{assert_band_invariant, Input};
 
 /// Segments (path commands, polyline vertices) per frame, all shapes
@@ -116,18 +116,6 @@ impl Shape for RawSvg<'_> {
         let _ = parse_path_data(self.0, sink);
     }
 }
-
-const MODELS: [PixelModel; 9] = [
-    PixelModel::Box,
-    PixelModel::BoxSeed,
-    PixelModel::BedOfNails4,
-    PixelModel::BedOfNails8,
-    PixelModel::Hex7,
-    PixelModel::Hex19,
-    PixelModel::Cone,
-    PixelModel::Gaussian,
-    PixelModel::Hamming,
-];
 
 /// Something done with each item's shape (drawing it, or checking its
 /// segments): `with_shape` makes the shape, the visitor gets it.
@@ -771,10 +759,7 @@ impl Reader<'_, '_> {
 fuzz_target!(|data: &[u8]| {
     let mut inp = Input::new(data);
     let (w, h) = (inp.side(96), inp.side(64));
-    let style = RenderStyle {
-        antialias: !inp.u8().is_multiple_of(5),
-        model: MODELS[usize::from(inp.u8()) % MODELS.len()],
-    };
+    let style = inp.style();
     let background = [inp.lin12()];
     let (rows_a, rows_b) = (inp.side(h), inp.side(h));
     let mut reader = Reader {

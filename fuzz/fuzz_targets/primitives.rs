@@ -4,8 +4,7 @@
 
 use libfuzzer_sys::fuzz_target;
 use softedge::{
-    BandBuffer, DrawError, Line, PixelModel, Polygon, PolygonColors, RenderStyle, SubPoint,
-    Triangle,
+    BandBuffer, DrawError, Line, Polygon, PolygonColors, RenderStyle, SubPoint, Triangle,
 };
 use softedge_fuzz::{assert_band_invariant, Input};
 
@@ -14,18 +13,6 @@ enum Shape {
     Polygon(Vec<SubPoint>, Vec<[u16; 1]>, bool),
     Line(Line<1>),
 }
-
-const MODELS: [PixelModel; 9] = [
-    PixelModel::Box,
-    PixelModel::BoxSeed,
-    PixelModel::BedOfNails4,
-    PixelModel::BedOfNails8,
-    PixelModel::Hex7,
-    PixelModel::Hex19,
-    PixelModel::Cone,
-    PixelModel::Gaussian,
-    PixelModel::Hamming,
-];
 
 /// The one use of the drawing API: the shapes, in order, into one band.
 fn draw(
@@ -55,10 +42,7 @@ fn draw(
 fuzz_target!(|data: &[u8]| {
     let mut inp = Input::new(data);
     let (w, h) = (inp.side(96), inp.side(64));
-    let style = RenderStyle {
-        antialias: !inp.u8().is_multiple_of(5),
-        model: MODELS[usize::from(inp.u8()) % MODELS.len()],
-    };
+    let style = inp.style();
     let background = [inp.lin12()];
     let (rows_a, rows_b) = (inp.side(h), inp.side(h));
     let mut shapes = Vec::new();

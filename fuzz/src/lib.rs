@@ -7,7 +7,20 @@
 //! drawing API changes, that function is what to port.
 
 use softedge::geom::COORD_LIMIT_SUB;
-use softedge::{Band, BandBuffer, Bands, SubPoint};
+use softedge::{Band, BandBuffer, Bands, PixelModel, RenderStyle, SubPoint};
+
+/// Every pixel model, for [`Input::style`].
+pub const MODELS: [PixelModel; 9] = [
+    PixelModel::Box,
+    PixelModel::BoxSeed,
+    PixelModel::BedOfNails4,
+    PixelModel::BedOfNails8,
+    PixelModel::Hex7,
+    PixelModel::Hex19,
+    PixelModel::Cone,
+    PixelModel::Gaussian,
+    PixelModel::Hamming,
+];
 
 /// Reads fuzzer bytes as bounded values; past the end every read is 0.
 pub struct Input<'a> {
@@ -62,6 +75,15 @@ impl<'a> Input<'a> {
             2 => self.range(-COORD_LIMIT_SUB - 64, COORD_LIMIT_SUB + 64),
             3 => self.u32() as i32,
             _ => self.range(-64, size_sub + 64),
+        }
+    }
+
+    /// A render style from two bytes: aliased one time in five, any pixel
+    /// model.
+    pub fn style(&mut self) -> RenderStyle {
+        RenderStyle {
+            antialias: !self.u8().is_multiple_of(5),
+            model: MODELS[usize::from(self.u8()) % MODELS.len()],
         }
     }
 

@@ -182,6 +182,20 @@ mod tests {
         }
     }
 
+    /// `culled` (numbered through window `w`) has the same count as
+    /// `whole` and the same numbered segments where they meet `w`.
+    fn assert_same_numbers(whole: &Numbering, culled: &Numbering, w: (i32, i32), case: u32) {
+        let meets = |n: &Numbering| -> std::vec::Vec<_> {
+            n.segs
+                .iter()
+                .copied()
+                .filter(|(_, a, b)| a.y.max(b.y) >= w.0 && a.y.min(b.y) <= w.1)
+                .collect()
+        };
+        assert_eq!(whole.next, culled.next, "case {case}");
+        assert_eq!(meets(whole), meets(culled), "case {case}");
+    }
+
     #[test]
     fn curves_outside_the_window_leave_out_only_segments_outside_it() {
         let mut rng = Lcg(0x2f6b_3a9c_11d4_e807);
@@ -212,15 +226,7 @@ mod tests {
                 n
             };
             let (whole, culled) = (run(None), run(Some(w)));
-            let meets = |n: &Numbering| -> std::vec::Vec<_> {
-                n.segs
-                    .iter()
-                    .copied()
-                    .filter(|(_, a, b)| a.y.max(b.y) >= w.0 && a.y.min(b.y) <= w.1)
-                    .collect()
-            };
-            assert_eq!(whole.next, culled.next, "case {case}");
-            assert_eq!(meets(&whole), meets(&culled), "case {case}");
+            assert_same_numbers(&whole, &culled, w, case);
             jumped += whole.segs.len() - culled.segs.len();
         }
         assert!(jumped > 10_000, "{jumped}");
@@ -271,15 +277,7 @@ mod tests {
                 n
             };
             let (whole, culled) = (run(None), run(Some(w)));
-            let meets = |n: &Numbering| -> std::vec::Vec<_> {
-                n.segs
-                    .iter()
-                    .copied()
-                    .filter(|(_, a, b)| a.y.max(b.y) >= w.0 && a.y.min(b.y) <= w.1)
-                    .collect()
-            };
-            assert_eq!(whole.next, culled.next, "case {case}");
-            assert_eq!(meets(&whole), meets(&culled), "case {case}");
+            assert_same_numbers(&whole, &culled, w, case);
         }
     }
 
