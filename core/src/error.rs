@@ -46,6 +46,9 @@ pub enum DrawError {
     /// A recorded outline lost segments: its
     /// [`SegmentBuffer`](crate::path::SegmentBuffer) was too small.
     Incomplete,
+    /// A [`TriangleList`](crate::canvas::TriangleList) has no room for
+    /// another triangle.
+    ListFull,
 }
 
 impl From<CoordError> for DrawError {
@@ -73,6 +76,7 @@ impl Display for DrawError {
                 "point ({}, {}) in 1/1024 px is outside ±{COORD_LIMIT_PX} px",
                 p.x, p.y
             ),
+            Self::ListFull => f.write_str("triangle list is full"),
             Self::BadIndex => f.write_str("a mesh triangle names a point the mesh does not have"),
             Self::Stroke(e) => e.fmt(f),
         }

@@ -9,7 +9,7 @@
 //! ```
 
 pub use crate::band::BandBuffer;
-pub use crate::canvas::{Canvas, WalkSlot};
+pub use crate::canvas::{Canvas, ListedTriangle, TriangleList, WalkSlot};
 pub use crate::draw::{AaDrawable, AaGradient, AaStyle};
 pub use crate::geom::FinePoint;
 pub use crate::path::{Dash, LineCap, LineJoin, MiterLimit};

@@ -47,12 +47,12 @@ use core::hint::black_box;
 use cortex_m_rt::{entry, exception};
 use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 use embedded_graphics::prelude::*;
-use softedge::canvas::WalkSlot;
+use softedge::canvas::{ListedTriangle, WalkSlot};
 use softedge::BandBuffer;
 use softedge_board_common::{self as fw, insns::Counter, Line};
 use softedge_workloads::render::eg_side;
 use softedge_workloads::render::softedge_side::{
-    self, Buffers, ACC_LEN, COVER_LEN, OUT_LEN, SLOTS,
+    self, Buffers, ACC_LEN, COVER_LEN, LIST_LEN, OUT_LEN, SLOTS,
 };
 use softedge_workloads::render::targets::{Framebuffer, SpiCounter, FB_LEN};
 use softedge_workloads::render::ui;
@@ -79,6 +79,7 @@ fn main() -> ! {
     static mut OUT8: [u8; OUT_LEN] = [0; OUT_LEN];
     static mut SLOTS3: [WalkSlot<3>; SLOTS] = [WalkSlot::EMPTY; SLOTS];
     static mut SLOTS1: [WalkSlot<1>; SLOTS] = [WalkSlot::EMPTY; SLOTS];
+    static mut LIST3: [ListedTriangle<3>; LIST_LEN] = [ListedTriangle::EMPTY; LIST_LEN];
     static mut FB: [u16; FB_LEN] = [0; FB_LEN];
     static mut PANEL_ACC: [i32; panel::ACC_LEN] = [0; panel::ACC_LEN];
     static mut PANEL_COVER: [i32; panel::COVER_LEN] = [0; panel::COVER_LEN];
@@ -123,6 +124,7 @@ fn main() -> ! {
         out8: OUT8,
         slots3: SLOTS3,
         slots1: SLOTS1,
+        list3: LIST3,
     };
     for r in softedge_side::Renderer::ALL {
         let mut run = |w: &Workload, tris: &[Tri], rows: u16| {

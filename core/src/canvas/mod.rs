@@ -20,11 +20,13 @@
 
 mod cache;
 mod gradient;
+mod list;
 pub(crate) mod paths;
 #[cfg(feature = "embedded-graphics")]
 mod target;
 
 pub use cache::{WalkCache, WalkSlot};
+pub use list::{ListedTriangle, TriangleList};
 
 use core::ops::Range;
 
@@ -227,6 +229,23 @@ enum WalkKind {
     Box(AreaMode),
     Aliased,
     Sampled,
+}
+
+impl WalkKind {
+    fn of(style: RenderStyle) -> Self {
+        match style {
+            s if !s.antialias => WalkKind::Aliased,
+            RenderStyle {
+                model: PixelModel::Box,
+                ..
+            } => WalkKind::Box(AreaMode::Exact),
+            RenderStyle {
+                model: PixelModel::BoxSeed,
+                ..
+            } => WalkKind::Box(AreaMode::SeedFormula),
+            _ => WalkKind::Sampled,
+        }
+    }
 }
 
 impl<'c, 'b, const C: usize> Canvas<'c, 'b, C> {
@@ -641,26 +660,85 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         if !self.touches(&b) {
             return Ok(());
         }
+        let rows = [b.y0 >> FINE_BITS, b.y1 >> FINE_BITS];
+        let oriented = orient(v);
         let [c0, c1, c2] = colors;
         if c0 == c1 && c1 == c2 {
             // Oriented, its coverage is linear: triangles sharing an edge
             // add up exactly.
             let paint = Paint::Flat(c0.map(|x| x.min(crate::LIN_MAX)));
-            let oriented = orient(v);
-            return self.fill_outline(serial, first, &oriented, Coverage::Signed(1), &paint, op);
+            self.fill_oriented(serial, first, &oriented, rows, &paint, op);
+        } else {
+            self.gouraud(serial, first, &v, &oriented, rows, &colors, op);
         }
-        let Some(plane) = self.plane(serial, first, v, colors, b) else {
-            return Ok(());
+        Ok(())
+    }
+
+    /// Draws a Gouraud triangle in range whose box touches the band (its
+    /// first and last pixel rows `rows`); `oriented` is `v` in the order
+    /// whose winding integral is its coverage.
+    #[allow(clippy::too_many_arguments)]
+    fn gouraud(
+        &mut self,
+        serial: u32,
+        first: u32,
+        v: &[FinePoint; 3],
+        oriented: &[FinePoint; 3],
+        rows: [i32; 2],
+        colors: &[[u16; C]; 3],
+        op: ComposeOp,
+    ) {
+        if let Some(plane) = self.plane(serial, first, *v, *colors, rows[1]) {
+            self.fill_oriented(serial, first, oriented, rows, &Paint::Plane(&plane), op);
+        }
+    }
+
+    /// [`fill_box`](Self::fill_box) of an oriented triangle: for the box
+    /// pixel models (no margin, no curves whose segments a window leaves
+    /// out), its three edges walked without the outline's numbering sink.
+    /// Every shape of every band it meets comes through here, so the
+    /// per-band cost of a triangle is little more than its walks.
+    fn fill_oriented(
+        &mut self,
+        serial: u32,
+        first: u32,
+        o: &[FinePoint; 3],
+        [y_first, y_last]: [i32; 2],
+        paint: &Paint<'_, C>,
+        op: ComposeOp,
+    ) {
+        let WalkKind::Box(mode) = WalkKind::of(self.style) else {
+            let b = triangle_box(o);
+            self.fill_box(serial, first, o, b, Coverage::Signed(1), paint, op);
+            return;
         };
-        let oriented = orient(v);
-        self.fill_outline(
-            serial,
-            first,
-            &oriented,
-            Coverage::Signed(1),
-            &Paint::Plane(&plane),
-            op,
-        )
+        let band = self.buf.band();
+        let rows = y_first.max(band.y0)..(y_last + 1).min(band.y0 + i32::from(band.rows));
+        if rows.start >= rows.end {
+            return;
+        }
+        let cols = band.column_range();
+        let buf = &mut *self.buf;
+        let mut cache = self.cache.as_mut();
+        let [p, q, r] = *o;
+        for (k, (p0, p1)) in [(0, (p, q)), (1, (q, r)), (2, (r, p))] {
+            let (ylo, yhi) = (p0.y.min(p1.y) >> FINE_BITS, p0.y.max(p1.y) >> FINE_BITS);
+            if yhi < rows.start || ylo >= rows.end {
+                continue;
+            }
+            let edge = first.wrapping_add(k);
+            cache::walk_edge(
+                cache.as_deref_mut(),
+                serial,
+                edge,
+                (p0, p1),
+                mode,
+                &cols,
+                rows.clone(),
+                buf,
+            );
+        }
+        buf.compose(rows.start, rows.end, Coverage::Signed(1), paint, op);
     }
 
     /// The Gouraud plane of a triangle: fitted once per frame when cached.
@@ -670,7 +748,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         index: u32,
         v: [FinePoint; 3],
         colors: [[u16; C]; 3],
-        b: FineRect,
+        last: i32,
     ) -> Option<Plane<C>> {
         let made_of = plane_key(v, &colors);
         if let Some(cache) = self.cache.as_mut() {
@@ -681,7 +759,6 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         let plane = Plane::triangle_fine(v, colors)?;
         let band = self.buf.band();
         let band_end = band.y0 + i32::from(band.rows);
-        let last = b.y1 >> FINE_BITS;
         if last >= band_end {
             if let Some(cache) = self.cache.as_mut() {
                 cache.put_plane(serial, index, made_of, band.y0, last, plane);
@@ -720,24 +797,30 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         if !self.touches(&b) {
             return Ok(());
         }
+        self.fill_box(serial, first, outline, b, coverage, paint, op);
+        Ok(())
+    }
+
+    /// [`fill_outline`](Self::fill_outline) of an outline known to be in
+    /// range, in the box `b`.
+    #[allow(clippy::too_many_arguments)]
+    fn fill_box<O: Outline + ?Sized>(
+        &mut self,
+        serial: u32,
+        first: u32,
+        outline: &O,
+        b: FineRect,
+        coverage: Coverage,
+        paint: &Paint<'_, C>,
+        op: ComposeOp,
+    ) {
         let band = self.buf.band();
-        let kind = match self.style {
-            s if !s.antialias => WalkKind::Aliased,
-            RenderStyle {
-                model: PixelModel::Box,
-                ..
-            } => WalkKind::Box(AreaMode::Exact),
-            RenderStyle {
-                model: PixelModel::BoxSeed,
-                ..
-            } => WalkKind::Box(AreaMode::SeedFormula),
-            _ => WalkKind::Sampled,
-        };
+        let kind = WalkKind::of(self.style);
         let margin = if kind == WalkKind::Sampled { 2 } else { 0 };
         let rows: Range<i32> = ((b.y0 >> FINE_BITS) - margin).max(band.y0)
             ..((b.y1 >> FINE_BITS) + 1 + margin).min(band.y0 + i32::from(band.rows));
         if rows.start >= rows.end {
-            return Ok(());
+            return;
         }
         let cols = band.column_range();
         let style = self.style;
@@ -789,7 +872,6 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         });
         outline.segments_into(&mut edges);
         buf.compose(rows.start, rows.end, coverage, paint, op);
-        Ok(())
     }
 }
 

@@ -23,10 +23,12 @@ mod tests {
     use std::vec;
 
     use super::eg_side::{self, StockFramebuffer, Targets};
-    use super::softedge_side::{self, Buffers, Renderer, ACC_LEN, COVER_LEN, OUT_LEN, SLOTS};
+    use super::softedge_side::{
+        self, Buffers, Renderer, ACC_LEN, COVER_LEN, LIST_LEN, OUT_LEN, SLOTS,
+    };
     use super::targets::{Framebuffer, FB_LEN};
     use crate::{Tri, CLASSES, SCREEN};
-    use softedge::canvas::WalkSlot;
+    use softedge::canvas::{ListedTriangle, WalkSlot};
 
     struct Storage {
         acc: vec::Vec<i32>,
@@ -35,6 +37,7 @@ mod tests {
         out8: vec::Vec<u8>,
         slots3: vec::Vec<WalkSlot<3>>,
         slots1: vec::Vec<WalkSlot<1>>,
+        list3: vec::Vec<ListedTriangle<3>>,
     }
 
     impl Storage {
@@ -46,6 +49,7 @@ mod tests {
                 out8: vec![0; OUT_LEN],
                 slots3: vec![WalkSlot::EMPTY; SLOTS],
                 slots1: vec![WalkSlot::EMPTY; SLOTS],
+                list3: vec![ListedTriangle::EMPTY; LIST_LEN],
             }
         }
 
@@ -57,6 +61,7 @@ mod tests {
                 out8: &mut self.out8,
                 slots3: &mut self.slots3,
                 slots1: &mut self.slots1,
+                list3: &mut self.list3,
             }
         }
 
@@ -83,13 +88,16 @@ mod tests {
     }
 
     #[test]
-    fn the_walk_cache_changes_no_pixel_whatever_its_size() {
+    fn neither_the_walk_cache_nor_a_triangle_list_changes_a_pixel() {
         // The last band of the frame stays in the output buffer. A cache
         // of 16 slots is too small for the screen's live edges in 3-row
         // bands: entries are refused and set up again, never wrong.
+        // Nor does drawing the triangles from a list recorded per frame.
         let (mut a, mut b, mut c) = (Storage::new(), Storage::new(), Storage::new());
+        let mut d = Storage::new();
         for rows in [16, 3, 1] {
             assert!(a.frame(Renderer::AaFlatRgb, SCREEN.tris, rows));
+            assert!(d.frame(Renderer::AaFlatRgbListed, SCREEN.tris, rows));
             assert!(b.frame(Renderer::AaFlatRgbNoCache, SCREEN.tris, rows));
             assert!(softedge_side::frame_with_cache(SCREEN.tris, rows, 16, &mut c.bufs()).is_ok());
             let last_rows = match 240 % rows {
@@ -99,6 +107,7 @@ mod tests {
             let n = 240 * usize::from(last_rows);
             assert_eq!(a.out16[..n], b.out16[..n]);
             assert_eq!(a.out16[..n], c.out16[..n]);
+            assert_eq!(a.out16[..n], d.out16[..n]);
             assert!(a.out16[..n].iter().any(|&p| p != 0));
         }
     }

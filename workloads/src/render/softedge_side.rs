@@ -16,7 +16,7 @@
 use core::hint::black_box;
 
 use crate::{Tri, FRAME};
-use softedge::canvas::WalkSlot;
+use softedge::canvas::{ListedTriangle, TriangleList, WalkSlot};
 use softedge::geom::FinePoint;
 use softedge::render::Renderer as FrameRenderer;
 use softedge::style::{Blend, Opacity};
@@ -37,6 +37,8 @@ pub const OUT_LEN: usize = FRAME as usize * MAX_BAND_ROWS as usize;
 /// Slots of the walk cache: the edges alive across a band boundary, and
 /// the planes of the Gouraud triangles alive there, with room to spare.
 pub const SLOTS: usize = 256;
+/// Entries of the triangle list: the largest workload.
+pub const LIST_LEN: usize = crate::COUNT;
 
 /// The display's tone stage: sRGB γ, Rgb565 (tables in flash).
 static RGB565: Rgb565Format = Rgb565Format::new(Curve::Srgb);
@@ -57,16 +59,22 @@ pub enum Renderer {
     /// As [`AaFlatRgb`](Self::AaFlatRgb) without the walk cache: every
     /// band sets its shapes up again.
     AaFlatRgbNoCache,
+    /// As [`AaFlatRgb`](Self::AaFlatRgb), the triangles recorded once per
+    /// frame (inside the measured frame) into a
+    /// [`TriangleList`](softedge::canvas::TriangleList) that every band
+    /// draws: the drawing closure no longer runs per triangle and band.
+    AaFlatRgbListed,
 }
 
 impl Renderer {
     /// Every renderer, in the order of the output.
-    pub const ALL: [Renderer; 5] = [
+    pub const ALL: [Renderer; 6] = [
         Renderer::AaFlatRgb,
         Renderer::AaGouraudRgb,
         Renderer::AaGray,
         Renderer::AliasedRgb,
         Renderer::AaFlatRgbNoCache,
+        Renderer::AaFlatRgbListed,
     ];
 
     /// The name printed in the output.
@@ -77,6 +85,7 @@ impl Renderer {
             Renderer::AaGray => "aa_gray",
             Renderer::AliasedRgb => "aliased_rgb",
             Renderer::AaFlatRgbNoCache => "aa_rgb_nocache",
+            Renderer::AaFlatRgbListed => "aa_rgb_listed",
         }
     }
 }
@@ -95,6 +104,9 @@ pub struct Buffers<'a> {
     pub slots3: &'a mut [WalkSlot<3>],
     /// The walk cache of the gray renderer.
     pub slots1: &'a mut [WalkSlot<1>],
+    /// The triangle list of [`Renderer::AaFlatRgbListed`], at least
+    /// [`LIST_LEN`] entries.
+    pub list3: &'a mut [ListedTriangle<3>],
 }
 
 /// A frame stopped: a buffer did not fit its band or a triangle was
@@ -127,6 +139,7 @@ pub fn frame(
         Renderer::AaFlatRgbNoCache => {
             frame_rgb(tris, band_rows, bufs, RenderStyle::default(), false, 0)
         }
+        Renderer::AaFlatRgbListed => frame_rgb_listed(tris, band_rows, bufs),
     }
 }
 
@@ -177,6 +190,38 @@ fn frame_rgb(
                 let colors = if gouraud { t.rgb } else { [t.flat_rgb(); 3] };
                 c.fill_triangle(vertices(t), colors, Blend::Over, Opacity::OPAQUE)?;
             }
+            Ok::<(), softedge::DrawError>(())
+        })
+        .map_err(|_| FrameError)?;
+    black_box(report);
+    black_box(sink.pixels());
+    Ok(())
+}
+
+#[inline(never)]
+fn frame_rgb_listed(
+    tris: &[Tri],
+    band_rows: u16,
+    bufs: &mut Buffers<'_>,
+) -> Result<(), FrameError> {
+    let mut list = TriangleList::new(&mut *bufs.list3);
+    for t in tris {
+        list.push(vertices(t), [t.flat_rgb(); 3], Blend::Over, Opacity::OPAQUE)
+            .map_err(|_| FrameError)?;
+    }
+    let mut r = FrameRenderer::<3>::new(
+        &mut *bufs.acc,
+        &mut *bufs.cover,
+        &mut *bufs.slots3,
+        FRAME,
+        FRAME,
+        band_rows,
+    )
+    .map_err(|_| FrameError)?;
+    let mut sink = BandStream::new(&mut *bufs.out16, u32::from(FRAME), u32::from(FRAME));
+    let report = r
+        .render(&mut sink, &RGB565, [0; 3], |c| {
+            c.fill_triangles(&list);
             Ok::<(), softedge::DrawError>(())
         })
         .map_err(|_| FrameError)?;

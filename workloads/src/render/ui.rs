@@ -162,6 +162,7 @@ pub fn softedge_shape(shape: Shape, bufs: &mut Buffers<'_>) -> Result<(), FrameE
         out8: &mut *bufs.out8,
         slots3: &mut *bufs.slots3,
         slots1: &mut *bufs.slots1,
+        list3: &mut *bufs.list3,
     };
     shape_into(shape, parts, &mut sink)?;
     black_box(sink.pixels());
@@ -454,6 +455,8 @@ mod tests {
         out8: Vec<u8>,
         slots3: Vec<WalkSlot<3>>,
         slots1: Vec<WalkSlot<1>>,
+        /// Not drawn from here: no entries.
+        list3: Vec<softedge::canvas::ListedTriangle<3>>,
     }
 
     impl Storage {
@@ -465,6 +468,7 @@ mod tests {
                 out8: vec![0; OUT_LEN],
                 slots3: vec![WalkSlot::EMPTY; SLOTS],
                 slots1: vec![WalkSlot::EMPTY; SLOTS],
+                list3: Vec::new(),
             }
         }
 
@@ -476,6 +480,7 @@ mod tests {
                 out8: &mut self.out8,
                 slots3: &mut self.slots3,
                 slots1: &mut self.slots1,
+                list3: &mut self.list3,
             }
         }
     }

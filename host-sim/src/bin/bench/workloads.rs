@@ -13,7 +13,7 @@
 
 use softedge_workloads::render::eg_side::{self, StockFramebuffer, Targets};
 use softedge_workloads::render::softedge_side::{
-    self, Buffers, ACC_LEN, COVER_LEN, OUT_LEN, SLOTS,
+    self, Buffers, ACC_LEN, COVER_LEN, LIST_LEN, OUT_LEN, SLOTS,
 };
 use softedge_workloads::render::targets::{Framebuffer, FB_LEN};
 use softedge_workloads::{Tri, Workload, CLASSES, COUNT, SCREEN};
@@ -83,6 +83,7 @@ struct Job {
     out8: Vec<u8>,
     slots3: Vec<softedge::canvas::WalkSlot<3>>,
     slots1: Vec<softedge::canvas::WalkSlot<1>>,
+    list3: Vec<softedge::canvas::ListedTriangle<3>>,
     fb: Box<[u16; FB_LEN]>,
     stock: Box<StockFramebuffer>,
     pixmap: tiny_skia::Pixmap,
@@ -116,6 +117,7 @@ impl Job {
             out8: vec![0; OUT_LEN],
             slots3: vec![softedge::canvas::WalkSlot::EMPTY; SLOTS],
             slots1: vec![softedge::canvas::WalkSlot::EMPTY; SLOTS],
+            list3: vec![softedge::canvas::ListedTriangle::EMPTY; LIST_LEN],
             fb: Box::new([0; FB_LEN]),
             stock: Box::new(StockFramebuffer::new()),
             pixmap: tiny_skia::Pixmap::new(240, 240)?,
@@ -154,6 +156,7 @@ fn workload_frame(job: &mut Job) -> bool {
                 out8: &mut job.out8,
                 slots3: &mut job.slots3,
                 slots1: &mut job.slots1,
+                list3: &mut job.list3,
             };
             softedge_side::frame(r, job.tris, job.rows, &mut bufs).is_ok()
         }
