@@ -78,6 +78,7 @@ $1 == "cache" {
     if (!($2 in cseen)) { cseen[$2] = 1; corder[++nk] = $2 }
     cbytes[$2] = $3; cache[$2, $4] = $6; if ($4 == 3) b3 = $5
 }
+$1 == "cache_listed" { lcache[$2, $4] = $6 }
 $1 == "workload" { tris[$2] = $3; area2[$2] = $4; marginal2[$2] = $5 }
 $1 == "panel" {
     if (!($2 in pseen)) { pseen[$2] = 1; porder[++np] = $2 }
@@ -97,6 +98,7 @@ END {
     label["aa_gray"] = "softedge AA gray, Gray8"
     label["aliased_rgb"] = "softedge aliased flat RGB, Rgb565"
     label["aa_rgb_nocache"] = "softedge AA flat RGB, Rgb565, no walk cache"
+    label["aa_rgb_listed"] = "softedge AA flat RGB, Rgb565, `TriangleList` recorded in the frame"
     label["eg_fill"] = "e-g `Triangle` fill, framebuffer with slice `fill_solid`"
     label["eg_stock_fb"] = "e-g `Triangle` fill, e-g `Framebuffer` (`draw_iter`)"
     split("small medium large", cls, " ")
@@ -120,24 +122,24 @@ END {
     split("16 8 6 4 3 2 1", bh, " ")
     printf "| renderer "
     for (k = 1; k <= 7; k++) printf "| %s ", bh[k]
-    printf "|\n| --- |"
-    for (k = 1; k <= 7; k++) printf " ---: |"
+    printf "| 3 rows / 16 rows |\n| --- |"
+    for (k = 1; k <= 8; k++) printf " ---: |"
     printf "\n"
     for (i = 1; i <= nr; i++) {
         r = order[i]
         if (!((r, 8) in screen)) continue
         printf "| %s ", (r in label ? label[r] : r)
         for (k = 1; k <= 7; k++) printf "| %s ", mega(screen[r, bh[k]])
-        printf "|\n"
+        printf "| %.3fx |\n", screen[r, 3] / screen[r, 16]
     }
-    printf "\nWhat the walk cache buys: the screen, softedge AA flat RGB, by walk-cache slots (caller-provided, `WalkSlot::<3>::SIZE` bytes each), "
-    printf "and the RAM of the 3-row frame (band buffers, %s bytes, + cache):\n\n", group(b3)
-    printf "| walk-cache slots | cache bytes | 16-row bands | 3-row bands | 3 rows / 16 rows | 3-row RAM, band + cache |\n"
-    printf "| ---: | ---: | ---: | ---: | ---: | ---: |\n"
+    printf "\nWhat the walk cache buys: the screen, softedge AA flat RGB, drawn directly and from a `TriangleList`, by walk-cache slots (caller-provided, `WalkSlot::<3>::SIZE` bytes each), "
+    printf "and the RAM of the 3-row frame (band buffers, %s bytes, + cache; the list is 56 bytes a triangle more):\n\n", group(b3)
+    printf "| walk-cache slots | cache bytes | 16-row bands | 3-row bands | 3 rows / 16 rows | listed, 16-row | listed, 3-row | 3 rows / 16 rows | 3-row RAM, band + cache |\n"
+    printf "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n"
     for (i = 1; i <= nk; i++) {
         k = corder[i]
-        printf "| %s | %s | %s | %s | %.2fx | %s |\n", k, group(cbytes[k]), mega(cache[k, 16]), mega(cache[k, 3]), \
-            cache[k, 3] / cache[k, 16], group(cbytes[k] + b3)
+        printf "| %s | %s | %s | %s | %.3fx | %s | %s | %.3fx | %s |\n", k, group(cbytes[k]), mega(cache[k, 16]), mega(cache[k, 3]), \
+            cache[k, 3] / cache[k, 16], mega(lcache[k, 16]), mega(lcache[k, 3]), lcache[k, 3] / lcache[k, 16], group(cbytes[k] + b3)
     }
     printf "\nRaw counts (instructions per frame):\n\n```\n"
     for (i = 1; i <= nr; i++) {

@@ -92,6 +92,16 @@ pub fn report(width: u16, height: u16, channels: usize, rows: &[u16], triangles:
         "walk cache (optional, caller-provided, not in the totals above): {slot} bytes a slot \
          (an edge's walk state or a Gouraud plane carried to the next band)\n"
     );
+    let listed = if channels == 1 {
+        softedge::canvas::ListedTriangle::<1>::SIZE
+    } else {
+        softedge::canvas::ListedTriangle::<3>::SIZE
+    };
+    out += &format!(
+        "triangle list (optional, caller-provided, not in the totals above): {listed} bytes \
+         a triangle, {} for {triangles} (a frame's triangles recorded once, drawn in every band)\n",
+        listed * triangles
+    );
     out
 }
 

@@ -13,6 +13,8 @@
 //! insns_per_tick <num>/<den>
 //! workload <name> <triangles> <twice the area of all> <twice the area of triangles 2..N>
 //! insns <renderer> <workload> <triangles drawn> <band rows> <instructions>
+//! cache <slots> <cache bytes> <band rows> <band buffer bytes> <instructions>
+//! cache_listed <slots> <cache bytes> <band rows> <band buffer bytes> <instructions>
 //! shape <renderer> <none|circle|gauge|gauge_round> <instructions>
 //! redraw <renderer> <full|window> <instructions> <windows> <pixels> <SPI bytes>
 //! panel <band rows> <band buffer bytes> <whole|partial> <instructions>
@@ -152,24 +154,32 @@ fn main() -> ! {
     }
 
     // The walk cache's RAM against its time (issue 14): the screen, AA
-    // flat RGB, by the number of cache slots, in 16- and 3-row bands.
-    for slots in CACHE_SLOTS {
-        for rows in [BAND_ROWS, 3] {
-            let all = SCREEN.tris.len();
-            if let Some((insns, ok)) = bench.measure("aa_rgb_cache", "screen", all, all, rows, || {
-                softedge_side::frame_with_cache(SCREEN.tris, rows, slots, &mut bufs).is_ok()
-            }) {
-                Bench::tag(ok, "cache ")
-                    .dec(slots as u64)
-                    .text(" ")
-                    .dec((slots * WalkSlot::<3>::SIZE) as u64)
-                    .text(" ")
-                    .dec(u64::from(rows))
-                    .text(" ")
-                    .dec(band_bytes(rows))
-                    .text(" ")
-                    .dec(insns)
-                    .print();
+    // flat RGB, drawn directly and from a triangle list, by the number of
+    // cache slots, in 16- and 3-row bands.
+    for (listed, name, tag) in [
+        (false, "aa_rgb_cache", "cache "),
+        (true, "aa_rgb_listed_cache", "cache_listed "),
+    ] {
+        for slots in CACHE_SLOTS {
+            for rows in [BAND_ROWS, 3] {
+                let all = SCREEN.tris.len();
+                let frame = || {
+                    softedge_side::frame_with_cache(SCREEN.tris, rows, slots, listed, &mut bufs)
+                        .is_ok()
+                };
+                if let Some((insns, ok)) = bench.measure(name, "screen", all, all, rows, frame) {
+                    Bench::tag(ok, tag)
+                        .dec(slots as u64)
+                        .text(" ")
+                        .dec((slots * WalkSlot::<3>::SIZE) as u64)
+                        .text(" ")
+                        .dec(u64::from(rows))
+                        .text(" ")
+                        .dec(band_bytes(rows))
+                        .text(" ")
+                        .dec(insns)
+                        .print();
+                }
             }
         }
     }

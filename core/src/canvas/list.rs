@@ -18,7 +18,7 @@
 //! [`Canvas::fill_triangle`] calls would be, with the same place in the
 //! drawing order (the walk cache's key): the same pixels, bit for bit.
 
-use super::{orient, triangle_box, Canvas};
+use super::{op_of, orient, triangle_box, Canvas};
 use crate::band::{ComposeOp, Paint};
 use crate::geom::{FinePoint, FINE_BITS};
 use crate::raster::DrawError;
@@ -126,10 +126,7 @@ impl<'a, const C: usize> TriangleList<'a, C> {
             cols: [px(b.x0), px(b.x1)],
             flip: orient(v) != v,
             flat,
-            op: match blend {
-                Blend::Over => ComposeOp::Over(opacity),
-                Blend::Add => ComposeOp::Add(opacity),
-            },
+            op: op_of(blend, opacity),
         };
         self.len += 1;
         Ok(())
@@ -315,46 +312,23 @@ mod tests {
             let list = &list;
             // Shapes before and after, so that the list's places in the
             // drawing order show in the cache's hits.
-            let direct = |c: &mut Canvas<'_, '_, 3>| {
-                c.fill_shape(
-                    &disc,
-                    [900, 0, 4095],
-                    FillRule::NonZero,
-                    Blend::Over,
-                    Opacity::OPAQUE,
-                )
-                .unwrap();
-                for &(v, col, b, o) in &tris {
-                    c.fill_triangle(v, col, b, o).unwrap();
+            let draw = |c: &mut Canvas<'_, '_, 3>, listed: bool| {
+                let op = Opacity::OPAQUE;
+                c.fill_shape(&disc, [900, 0, 4095], FillRule::NonZero, Blend::Over, op)
+                    .unwrap();
+                if listed {
+                    c.fill_triangles(list);
+                } else {
+                    for &(v, col, b, o) in &tris {
+                        c.fill_triangle(v, col, b, o).unwrap();
+                    }
                 }
-                c.fill_shape(
-                    &disc,
-                    [0, 4095, 0],
-                    FillRule::NonZero,
-                    Blend::Add,
-                    Opacity::from_ratio(1, 2),
-                )
-                .unwrap();
+                let half = Opacity::from_ratio(1, 2);
+                c.fill_shape(&disc, [0, 4095, 0], FillRule::NonZero, Blend::Add, half)
+                    .unwrap();
             };
-            let listed = |c: &mut Canvas<'_, '_, 3>| {
-                c.fill_shape(
-                    &disc,
-                    [900, 0, 4095],
-                    FillRule::NonZero,
-                    Blend::Over,
-                    Opacity::OPAQUE,
-                )
-                .unwrap();
-                c.fill_triangles(list);
-                c.fill_shape(
-                    &disc,
-                    [0, 4095, 0],
-                    FillRule::NonZero,
-                    Blend::Add,
-                    Opacity::from_ratio(1, 2),
-                )
-                .unwrap();
-            };
+            let direct = |c: &mut Canvas<'_, '_, 3>| draw(c, false);
+            let listed = |c: &mut Canvas<'_, '_, 3>| draw(c, true);
             let style = styles[case % styles.len()];
             let (whole, _) = frame(H, 64, style, direct);
             assert!(whole.iter().any(|&v| v != [300, 1200, 2400]));

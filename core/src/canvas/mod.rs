@@ -12,7 +12,10 @@
 //! band is the same shape, and with a [`WalkCache`] each of its edges
 //! resumes its walk where the band above left it, and its Gouraud planes
 //! are fitted once per frame. A shape that misses the band is rejected by
-//! its bounds before any set-up.
+//! its bounds before any set-up. A frame's triangles may also be recorded
+//! once into a [`TriangleList`] and drawn from it in every band
+//! ([`Canvas::fill_triangles`]): the per-band cost of a triangle that
+//! misses the band is then two compares.
 //!
 //! Rejected shapes (a vertex outside the coordinate range, too many
 //! vertices for a Gouraud polygon) are not drawn, counted, and the first
@@ -493,10 +496,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         // polygon cut along a diagonal, raw bits). Triangles and meshes
         // keep the linear integral (`Coverage::Signed`).
         let coverage = Coverage::Rule(rule);
-        let op = match blend {
-            Blend::Over => ComposeOp::Over(opacity),
-            Blend::Add => ComposeOp::Add(opacity),
-        };
+        let op = op_of(blend, opacity);
         self.fill_outline(serial, 0, outline, coverage, &paint, op)
     }
 
@@ -510,10 +510,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         opacity: Opacity,
     ) -> Result<(), DrawError> {
         let serial = self.next_serial();
-        let op = match blend {
-            Blend::Over => ComposeOp::Over(opacity),
-            Blend::Add => ComposeOp::Add(opacity),
-        };
+        let op = op_of(blend, opacity);
         let r = self.triangle(serial, 0, v, colors, op);
         r.inspect_err(|&e| self.skip(serial, e))
     }
@@ -562,10 +559,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             let Some(color) = flat else {
                 return Ok(());
             };
-            let op = match blend {
-                Blend::Over => ComposeOp::Over(opacity),
-                Blend::Add => ComposeOp::Add(opacity),
-            };
+            let op = op_of(blend, opacity);
             return self.fill_outline(
                 serial,
                 0,
@@ -576,10 +570,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             );
         };
         if let Some(color) = flat {
-            let op = match blend {
-                Blend::Over => ComposeOp::Over(opacity),
-                Blend::Add => ComposeOp::Add(opacity),
-            };
+            let op = op_of(blend, opacity);
             return self.fill_outline(
                 serial,
                 0,
@@ -967,6 +958,14 @@ impl Outline for Mesh<'_> {
                 f(c, a);
             }
         }
+    }
+}
+
+/// How a shape drawn with `blend` at `opacity` is composed.
+fn op_of(blend: Blend, opacity: Opacity) -> ComposeOp {
+    match blend {
+        Blend::Over => ComposeOp::Over(opacity),
+        Blend::Add => ComposeOp::Add(opacity),
     }
 }
 

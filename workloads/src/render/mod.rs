@@ -99,7 +99,10 @@ mod tests {
             assert!(a.frame(Renderer::AaFlatRgb, SCREEN.tris, rows));
             assert!(d.frame(Renderer::AaFlatRgbListed, SCREEN.tris, rows));
             assert!(b.frame(Renderer::AaFlatRgbNoCache, SCREEN.tris, rows));
-            assert!(softedge_side::frame_with_cache(SCREEN.tris, rows, 16, &mut c.bufs()).is_ok());
+            assert!(
+                softedge_side::frame_with_cache(SCREEN.tris, rows, 16, false, &mut c.bufs())
+                    .is_ok()
+            );
             let last_rows = match 240 % rows {
                 0 => rows,
                 r => r,

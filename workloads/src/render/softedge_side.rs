@@ -16,7 +16,8 @@
 use core::hint::black_box;
 
 use crate::{Tri, FRAME};
-use softedge::canvas::{ListedTriangle, TriangleList, WalkSlot};
+use embedded_graphics::pixelcolor::Rgb565;
+use softedge::canvas::{Canvas, ListedTriangle, TriangleList, WalkSlot};
 use softedge::geom::FinePoint;
 use softedge::render::Renderer as FrameRenderer;
 use softedge::style::{Blend, Opacity};
@@ -139,23 +140,28 @@ pub fn frame(
         Renderer::AaFlatRgbNoCache => {
             frame_rgb(tris, band_rows, bufs, RenderStyle::default(), false, 0)
         }
-        Renderer::AaFlatRgbListed => frame_rgb_listed(tris, band_rows, bufs),
+        Renderer::AaFlatRgbListed => frame_rgb_listed(tris, band_rows, bufs, SLOTS),
     }
 }
 
-/// [`Renderer::AaFlatRgb`] with only the first `slots` walk-cache slots
-/// (at most [`SLOTS`]; 0 is [`Renderer::AaFlatRgbNoCache`]): what the
-/// cache's RAM buys.
+/// [`Renderer::AaFlatRgb`] (or, `listed`, [`Renderer::AaFlatRgbListed`])
+/// with only the first `slots` walk-cache slots (at most [`SLOTS`]; 0 is
+/// no cache): what the cache's RAM buys.
 pub fn frame_with_cache(
     tris: &[Tri],
     band_rows: u16,
     slots: usize,
+    listed: bool,
     bufs: &mut Buffers<'_>,
 ) -> Result<(), FrameError> {
     if band_rows > MAX_BAND_ROWS {
         return Err(FrameError);
     }
-    frame_rgb(tris, band_rows, bufs, RenderStyle::default(), false, slots)
+    if listed {
+        frame_rgb_listed(tris, band_rows, bufs, slots)
+    } else {
+        frame_rgb(tris, band_rows, bufs, RenderStyle::default(), false, slots)
+    }
 }
 
 fn vertices(t: &Tri) -> [FinePoint; 3] {
@@ -171,31 +177,14 @@ fn frame_rgb(
     gouraud: bool,
     slots: usize,
 ) -> Result<(), FrameError> {
-    let n = slots.min(bufs.slots3.len());
-    let slots: &mut [WalkSlot<3>] = &mut bufs.slots3[..n];
-    let mut r = FrameRenderer::<3>::new(
-        &mut *bufs.acc,
-        &mut *bufs.cover,
-        slots,
-        FRAME,
-        FRAME,
-        band_rows,
-    )
-    .map_err(|_| FrameError)?;
-    let mut sink = BandStream::new(&mut *bufs.out16, u32::from(FRAME), u32::from(FRAME));
-    let report = r
-        .render(&mut sink, &RGB565, [0; 3], |c| {
-            c.set_style(style);
-            for t in tris {
-                let colors = if gouraud { t.rgb } else { [t.flat_rgb(); 3] };
-                c.fill_triangle(vertices(t), colors, Blend::Over, Opacity::OPAQUE)?;
-            }
-            Ok::<(), softedge::DrawError>(())
-        })
-        .map_err(|_| FrameError)?;
-    black_box(report);
-    black_box(sink.pixels());
-    Ok(())
+    render_rgb(band_rows, bufs, slots, |c| {
+        c.set_style(style);
+        for t in tris {
+            let colors = if gouraud { t.rgb } else { [t.flat_rgb(); 3] };
+            c.fill_triangle(vertices(t), colors, Blend::Over, Opacity::OPAQUE)?;
+        }
+        Ok(())
+    })
 }
 
 #[inline(never)]
@@ -203,16 +192,44 @@ fn frame_rgb_listed(
     tris: &[Tri],
     band_rows: u16,
     bufs: &mut Buffers<'_>,
+    slots: usize,
 ) -> Result<(), FrameError> {
-    let mut list = TriangleList::new(&mut *bufs.list3);
+    // The list lives in `bufs` beside what the renderer borrows: moved out
+    // for the frame, put back after it.
+    let store = core::mem::take(&mut bufs.list3);
+    let mut list = TriangleList::new(&mut *store);
+    let mut result = Ok(());
     for t in tris {
-        list.push(vertices(t), [t.flat_rgb(); 3], Blend::Over, Opacity::OPAQUE)
-            .map_err(|_| FrameError)?;
+        if list
+            .push(vertices(t), [t.flat_rgb(); 3], Blend::Over, Opacity::OPAQUE)
+            .is_err()
+        {
+            result = Err(FrameError);
+            break;
+        }
     }
+    if result.is_ok() {
+        result = render_rgb(band_rows, bufs, slots, |c| {
+            c.fill_triangles(&list);
+            Ok(())
+        });
+    }
+    bufs.list3 = store;
+    result
+}
+/// One RGB frame in bands of `band_rows` into `bufs.out16`, drawn by
+/// `draw` in every band, with the first `slots` walk-cache slots.
+fn render_rgb(
+    band_rows: u16,
+    bufs: &mut Buffers<'_>,
+    slots: usize,
+    draw: impl FnMut(&mut Canvas<'_, '_, 3, Rgb565>) -> Result<(), softedge::DrawError>,
+) -> Result<(), FrameError> {
+    let n = slots.min(bufs.slots3.len());
     let mut r = FrameRenderer::<3>::new(
         &mut *bufs.acc,
         &mut *bufs.cover,
-        &mut *bufs.slots3,
+        &mut bufs.slots3[..n],
         FRAME,
         FRAME,
         band_rows,
@@ -220,10 +237,7 @@ fn frame_rgb_listed(
     .map_err(|_| FrameError)?;
     let mut sink = BandStream::new(&mut *bufs.out16, u32::from(FRAME), u32::from(FRAME));
     let report = r
-        .render(&mut sink, &RGB565, [0; 3], |c| {
-            c.fill_triangles(&list);
-            Ok::<(), softedge::DrawError>(())
-        })
+        .render(&mut sink, &RGB565, [0; 3], draw)
         .map_err(|_| FrameError)?;
     black_box(report);
     black_box(sink.pixels());

@@ -59,6 +59,7 @@ impl Renderer {
             "aa_gray" => "softedge AA gray, Gray8",
             "aliased_rgb" => "softedge aliased flat RGB, Rgb565",
             "aa_rgb_nocache" => "softedge AA flat RGB, Rgb565, no walk cache",
+            "aa_rgb_listed" => "softedge AA flat RGB, Rgb565, `TriangleList` recorded in the frame",
             "eg_fill" => "e-g `Triangle` fill, framebuffer with slice `fill_solid`",
             "eg_stock_fb" => "e-g `Triangle` fill, e-g `Framebuffer` (`draw_iter`)",
             "ts_aa" => "tiny-skia `fill_path`, anti-aliased, RGBA8888 `Pixmap`",
