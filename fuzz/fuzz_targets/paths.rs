@@ -26,7 +26,7 @@ use softedge::path::{
 };
 use softedge::style::{Blend, FillRule, Opacity};
 use softedge::{BandBuffer, RenderStyle};
-use softedge_fuzz::{assert_band_invariant, Input};
+use softedge_fuzz::{assert_band_invariant, FrameSetup, Input};
 
 /// Segments (path commands, polyline vertices) per frame, all shapes
 /// together.
@@ -758,10 +758,13 @@ impl Reader<'_, '_> {
 
 fuzz_target!(|data: &[u8]| {
     let mut inp = Input::new(data);
-    let (w, h) = (inp.side(96), inp.side(64));
-    let style = inp.style();
-    let background = [inp.lin12()];
-    let (rows_a, rows_b) = (inp.side(h), inp.side(h));
+    let FrameSetup {
+        w,
+        h,
+        style,
+        background,
+        rows: (rows_a, rows_b),
+    } = inp.frame_setup();
     let mut reader = Reader {
         inp: &mut inp,
         w: i32::from(w),

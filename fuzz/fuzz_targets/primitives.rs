@@ -6,7 +6,7 @@ use libfuzzer_sys::fuzz_target;
 use softedge::{
     BandBuffer, DrawError, Line, Polygon, PolygonColors, RenderStyle, SubPoint, Triangle,
 };
-use softedge_fuzz::{assert_band_invariant, Input};
+use softedge_fuzz::{assert_band_invariant, FrameSetup, Input};
 
 enum Shape {
     Triangle(Triangle<1>),
@@ -41,10 +41,13 @@ fn draw(
 
 fuzz_target!(|data: &[u8]| {
     let mut inp = Input::new(data);
-    let (w, h) = (inp.side(96), inp.side(64));
-    let style = inp.style();
-    let background = [inp.lin12()];
-    let (rows_a, rows_b) = (inp.side(h), inp.side(h));
+    let FrameSetup {
+        w,
+        h,
+        style,
+        background,
+        rows: (rows_a, rows_b),
+    } = inp.frame_setup();
     let mut shapes = Vec::new();
     while !inp.is_empty() && shapes.len() < 12 {
         shapes.push(match inp.u8() % 3 {

@@ -9,19 +9,6 @@
 use softedge::geom::COORD_LIMIT_SUB;
 use softedge::{Band, BandBuffer, Bands, PixelModel, RenderStyle, SubPoint};
 
-/// Every pixel model, for [`Input::style`].
-pub const MODELS: [PixelModel; 9] = [
-    PixelModel::Box,
-    PixelModel::BoxSeed,
-    PixelModel::BedOfNails4,
-    PixelModel::BedOfNails8,
-    PixelModel::Hex7,
-    PixelModel::Hex19,
-    PixelModel::Cone,
-    PixelModel::Gaussian,
-    PixelModel::Hamming,
-];
-
 /// Reads fuzzer bytes as bounded values; past the end every read is 0.
 pub struct Input<'a> {
     data: &'a [u8],
@@ -83,7 +70,7 @@ impl<'a> Input<'a> {
     pub fn style(&mut self) -> RenderStyle {
         RenderStyle {
             antialias: !self.u8().is_multiple_of(5),
-            model: MODELS[usize::from(self.u8()) % MODELS.len()],
+            model: PixelModel::ALL[usize::from(self.u8()) % PixelModel::ALL.len()],
         }
     }
 
@@ -109,6 +96,33 @@ impl<'a> Input<'a> {
     pub fn side(&mut self, max: u16) -> u16 {
         1 + self.u16() % max
     }
+
+    /// What every target reads first: a frame of up to 96x64 pixels, its
+    /// style and gray background, and the two band heights compared.
+    pub fn frame_setup(&mut self) -> FrameSetup {
+        let (w, h) = (self.side(96), self.side(64));
+        let style = self.style();
+        let background = [self.lin12()];
+        let rows = (self.side(h), self.side(h));
+        FrameSetup {
+            w,
+            h,
+            style,
+            background,
+            rows,
+        }
+    }
+}
+
+/// A fuzzed frame's size, style, background and band heights
+/// ([`Input::frame_setup`]).
+pub struct FrameSetup {
+    pub w: u16,
+    pub h: u16,
+    pub style: RenderStyle,
+    pub background: [u16; 1],
+    /// The two band heights whose frames must be equal.
+    pub rows: (u16, u16),
 }
 
 /// The resolved frame, `width * height` pixels, row by row.

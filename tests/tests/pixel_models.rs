@@ -11,18 +11,6 @@ const W: u16 = 40;
 const H: u16 = 40;
 const FULL: i64 = 4095 * 65536;
 
-const MODELS: [PixelModel; 9] = [
-    PixelModel::Box,
-    PixelModel::BoxSeed,
-    PixelModel::BedOfNails4,
-    PixelModel::BedOfNails8,
-    PixelModel::Hex7,
-    PixelModel::Hex19,
-    PixelModel::Cone,
-    PixelModel::Gaussian,
-    PixelModel::Hamming,
-];
-
 /// The models that weigh point samples, with their sample spacing in
 /// sub-pixel units (a half-open square of that side holds exactly one
 /// sample wherever it lies).
@@ -145,7 +133,7 @@ fn shared_edges_sum_to_the_single_polygon_for_every_model() {
         SubPoint::new(83, 501),
     ];
     let centre = SubPoint::new(301, 277);
-    for model in MODELS {
+    for model in PixelModel::ALL {
         let one = frame(40, &|b| {
             Polygon::new(&sq, PolygonColors::Flat([3000]))
                 .draw(b, &style(model))
@@ -173,7 +161,7 @@ fn shared_edges_sum_to_the_single_polygon_for_every_model() {
 
 #[test]
 fn coverage_grows_monotonically_as_an_edge_sweeps_across_a_pixel() {
-    for model in MODELS {
+    for model in PixelModel::ALL {
         let mut prev = i32::MIN;
         // A half-plane whose left edge moves left across pixel column 20.
         for x in (18 * 16..23 * 16).rev() {

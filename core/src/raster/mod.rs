@@ -75,6 +75,22 @@ pub enum PixelModel {
     Hamming,
 }
 
+impl PixelModel {
+    /// Every pixel model, in declaration order (for sweeps over them:
+    /// tests, fuzzing, galleries).
+    pub const ALL: [PixelModel; 9] = [
+        PixelModel::Box,
+        PixelModel::BoxSeed,
+        PixelModel::BedOfNails4,
+        PixelModel::BedOfNails8,
+        PixelModel::Hex7,
+        PixelModel::Hex19,
+        PixelModel::Cone,
+        PixelModel::Gaussian,
+        PixelModel::Hamming,
+    ];
+}
+
 /// How primitives are drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -524,6 +540,26 @@ mod tests {
 
     use super::*;
     use crate::band::Band;
+
+    #[test]
+    fn every_pixel_model_is_listed_once_in_declaration_order() {
+        // The match has no wildcard: a new model does not compile here
+        // until it has its place in `ALL`.
+        let place = |m: PixelModel| match m {
+            PixelModel::Box => 0,
+            PixelModel::BoxSeed => 1,
+            PixelModel::BedOfNails4 => 2,
+            PixelModel::BedOfNails8 => 3,
+            PixelModel::Hex7 => 4,
+            PixelModel::Hex19 => 5,
+            PixelModel::Cone => 6,
+            PixelModel::Gaussian => 7,
+            PixelModel::Hamming => 8,
+        };
+        for (i, &m) in PixelModel::ALL.iter().enumerate() {
+            assert_eq!(place(m), i, "{m:?}");
+        }
+    }
 
     /// Sum of the raw accumulation (lin12 * 65536) over an 80x80 frame.
     fn energy(draw: impl Fn(&mut BandBuffer<'_, 1>) -> Result<(), DrawError>) -> i64 {
