@@ -591,7 +591,7 @@ impl Reader<'_, '_> {
             StrokeAlignment::Inside,
             StrokeAlignment::Outside,
         ][usize::from(inp.u8() % 3)];
-        let dash = if inp.u8() % 3 == 0 {
+        let dash = if inp.u8().is_multiple_of(3) {
             let n = usize::from(inp.u8() % 7);
             let pattern = (0..n)
                 .map(|_| match inp.u8() % 8 {
@@ -664,7 +664,11 @@ impl Reader<'_, '_> {
                     b'y' => self.svg_number(&mut d, self.h),
                     b'r' => self.svg_number(&mut d, self.w.max(self.h)),
                     b'a' => self.svg_number(&mut d, 360),
-                    _ => d.push(if self.inp.u8() % 8 == 0 { '2' } else { '1' }),
+                    _ => d.push(if self.inp.u8().is_multiple_of(8) {
+                        '2'
+                    } else {
+                        '1'
+                    }),
                 }
             }
             d.push(' ');
@@ -677,7 +681,7 @@ impl Reader<'_, '_> {
         self.budget = self.budget.saturating_sub(n);
         let mut cmds = Vec::with_capacity(n);
         // Mostly starting with a move, as paths do; not always.
-        if self.inp.u8() % 8 != 0 {
+        if !self.inp.u8().is_multiple_of(8) {
             cmds.push(Cmd::Move(self.point()));
         }
         for _ in 0..n {
@@ -737,7 +741,7 @@ impl Reader<'_, '_> {
         };
         let inp = &mut *self.inp;
         let color = [inp.lin12()];
-        let blend = if inp.u8() % 4 == 0 {
+        let blend = if inp.u8().is_multiple_of(4) {
             Blend::Add
         } else {
             Blend::Over
