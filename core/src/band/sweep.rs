@@ -282,49 +282,56 @@ fn over_flat_row<const C: usize, const SIGNED: bool>(
     tail: usize,
     signed: bool,
 ) -> (usize, usize) {
-    let f = *f;
     let n = changes.len();
-    let mut px = px;
     let mut c: i32 = 0;
     // The share of the pixels from the last change on.
     let mut s: i32 = 0;
     let mut i = 0;
-    while let Some(d) = changes.get_mut(i) {
-        if *d != 0 {
-            c = c.wrapping_add(core::mem::take(d));
+    while i < n {
+        let Some(d) = changes.get_mut(i) else {
+            break;
+        };
+        let dv = *d;
+        if dv != 0 {
+            *d = 0;
+            c = c.wrapping_add(dv);
             s = if SIGNED || signed {
                 c.clamp(0, COVER_ONE)
             } else {
                 c.unsigned_abs().min(COVER_ONE as u32) as i32
             };
         }
-        let Some((p, rest)) = core::mem::take(&mut px).split_first_chunk_mut::<C>() else {
-            break;
-        };
-        px = rest;
+        let at = i * C;
         i += 1;
         if s == COVER_ONE {
-            *p = f;
-            // The run's other whole pixels, to the next change (counted
-            // first: a loop bounded by the pixels left would make the
-            // compiler divide their count by C).
+            // The run's whole pixels, to the next change (counted first:
+            // a loop bounded by the pixels left would make the compiler
+            // divide their count by C).
             let mut j = i;
             while changes.get(j) == Some(&0) {
                 j += 1;
             }
-            px = fill(core::mem::take(&mut px), &f, j - i);
+            if let Some(run) = px.get_mut(at..j * C) {
+                fill(run, f, j + 1 - i);
+            }
             i = j;
         } else if s != 0 {
-            blend_over(p, &f, s);
+            if let Some(p) = px
+                .get_mut(at..at + C)
+                .and_then(|p| p.first_chunk_mut::<C>())
+            {
+                blend_over(p, f, s);
+            }
         }
     }
     if s != 0 {
         // Coverage left after the last change runs to the band's end.
+        let mut px = px.get_mut(n * C..).unwrap_or_default();
         while let Some((p, rest)) = core::mem::take(&mut px).split_first_chunk_mut::<C>() {
             if s == COVER_ONE {
-                *p = f;
+                *p = *f;
             } else {
-                blend_over(p, &f, s);
+                blend_over(p, f, s);
             }
             px = rest;
         }

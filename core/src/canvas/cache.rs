@@ -395,5 +395,7 @@ pub(crate) fn walk_edge<const C: usize>(
     }
     let mut w = EdgeWalk::unclipped(e, mode, cols.start);
     w.clip(cols.clone());
+    // Not kept: set up again if a later band needs it.
+    w.once();
     w.walk_band(rows, buf);
 }

@@ -18,7 +18,7 @@
 //! [`Canvas::fill_triangle`] calls would be, with the same place in the
 //! drawing order (the walk cache's key): the same pixels, bit for bit.
 
-use super::{op_of, orient, triangle_box, Canvas};
+use super::{op_of, orient, triangle_box, Canvas, WalkKind};
 use crate::band::{ComposeOp, Paint};
 use crate::geom::{FinePoint, FINE_BITS};
 use crate::raster::DrawError;
@@ -167,9 +167,19 @@ impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
         let entries = list.entries();
         self.serial = base.wrapping_add(entries.len() as u32);
         let reach = self.reach;
+        // The rows an entry must meet: the band's own for the box pixel
+        // models, which draw a triangle's rows only (`fill_oriented` clips
+        // to them), the reach's margin beyond them for the others.
+        let (y_lo, y_hi) = match WalkKind::of(self.style) {
+            WalkKind::Box(_) => {
+                let band = self.buf.band();
+                (band.y0, band.y0 + i32::from(band.rows))
+            }
+            _ => (reach.y_lo, reach.y_hi),
+        };
         for (i, t) in entries.iter().enumerate() {
             let rows = [i32::from(t.rows[0]), i32::from(t.rows[1])];
-            if rows[1] < reach.y_lo || rows[0] >= reach.y_hi {
+            if rows[1] < y_lo || rows[0] >= y_hi {
                 continue;
             }
             if i32::from(t.cols[1]) < reach.x_lo || i32::from(t.cols[0]) >= reach.x_hi {

@@ -679,6 +679,15 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         colors: &[[u16; C]; 3],
         op: ComposeOp,
     ) {
+        // The box pixel models draw the triangle's own rows only: a band
+        // in the reach's margin gets nothing from it (`fill_oriented`
+        // would find so), so its plane is not looked for there.
+        if let WalkKind::Box(_) = WalkKind::of(self.style) {
+            let band = self.buf.band();
+            if rows[1] < band.y0 || rows[0] >= band.y0 + i32::from(band.rows) {
+                return;
+            }
+        }
         if let Some(plane) = self.plane(serial, first, *v, *colors, rows[1]) {
             self.fill_oriented(serial, first, oriented, rows, &Paint::Plane(&plane), op);
         }

@@ -185,6 +185,9 @@ pub struct EdgeWalk {
     cross: Option<Crossings>,
     /// Where the last band's walk stopped (stepped in place by the next).
     resume: Option<Resume>,
+    /// Walked for one band and then dropped ([`once`](Self::once)): its
+    /// crossing tracker needs only that band's crossings.
+    once: bool,
 }
 
 /// The set-up of an [`EdgeWalk`], apart from its state (so that a walk
@@ -264,7 +267,19 @@ impl EdgeWalk {
             },
             cross: None,
             resume: None,
+            once: false,
         }
+    }
+
+    /// Marks the walk as one that is walked for one band only and then
+    /// dropped (no cache keeps it): a band of at most [`DIRECT`] - 1 rows
+    /// meets at most [`DIRECT`] of its crossings, which are then evaluated
+    /// directly, one at a time as the walk reaches them, rather than by
+    /// setting up the stepping for the rest of the edge. The same spills
+    /// either way (both are the exact floor).
+    #[inline(always)]
+    pub(crate) fn once(&mut self) {
+        self.once = true;
     }
 
     /// The set-up's last step: which columns of an x-major edge are
@@ -456,7 +471,9 @@ impl Geom {
     /// two per crossing when at most [`DIRECT`] are left, evaluated one at
     /// a time; none when the rest of the edge crosses no boundary inside).
     /// Written to `x` in place (a tracker is a few dozen words).
-    fn track(&self, cross: &mut Option<Crossings>, x: &mut Next, a: i32) {
+    /// `few`: the walk needs at most [`DIRECT`] more crossings, however
+    /// many the edge has left (it is dropped after this band).
+    fn track(&self, cross: &mut Option<Crossings>, x: &mut Next, a: i32, few: bool) {
         if !self.exact {
             *x = Next::Done;
             return;
@@ -478,7 +495,7 @@ impl Geom {
             *x = Next::Done;
             return;
         }
-        if end - m <= DIRECT {
+        if end - m <= DIRECT || few {
             // A few crossings left: evaluated directly, no stepping
             // constants.
             set_direct(x, &self.e, m, end);
@@ -811,7 +828,10 @@ impl EdgeWalk {
             }
             let s = g.main_term(st, a);
             if let Next::Unset = x {
-                g.track(&mut self.cross, &mut x, a);
+                // Dropped after this band: its crossings are those of
+                // boundaries up to y1, one per row at most.
+                let few = self.once && y1 - s.b < DIRECT;
+                g.track(&mut self.cross, &mut x, a, few);
             }
             let (here, down) = match x.down_at(a, &self.cross) {
                 Some(down) => (true, down),
@@ -938,7 +958,10 @@ impl EdgeWalk {
             let s = g.main_term(st, a);
             st = Some(s);
             if let Next::Unset = x {
-                g.track(&mut self.cross, x, a);
+                // Dropped after this band: at most one crossing a row
+                // (`dv <= du`).
+                let few = self.once && hi - a <= DIRECT;
+                g.track(&mut self.cross, x, a, few);
             }
             let bc = s.b;
             match x.down_at(a, &self.cross) {
