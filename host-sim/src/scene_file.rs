@@ -196,6 +196,30 @@ pub struct SceneFile {
     hsr_span: Option<Range<usize>>,
 }
 
+/// A pixel model's name in scene files (`[render] pixel_model`) and on
+/// the command line (the bench's `model-<name>` frames).
+pub fn model_name(model: PixelModel) -> &'static str {
+    match model {
+        PixelModel::Box => "box",
+        PixelModel::BoxSeed => "box-seed",
+        PixelModel::BedOfNails4 => "bed4",
+        PixelModel::BedOfNails8 => "bed8",
+        PixelModel::Hex7 => "hex7",
+        PixelModel::Hex19 => "hex19",
+        PixelModel::Cone => "cone",
+        PixelModel::Gaussian => "gauss",
+        PixelModel::Hamming => "hamming",
+        // `PixelModel` is non-exhaustive; a model added to the core without
+        // a name here fails `every_pixel_model_has_its_own_name`.
+        _ => "?",
+    }
+}
+
+/// The pixel model named `name` ([`model_name`]), if any.
+pub fn model_named(name: &str) -> Option<PixelModel> {
+    PixelModel::ALL.into_iter().find(|&m| model_name(m) == name)
+}
+
 /// Reads and checks a scene file; an unreadable file is a diagnostic
 /// without a line.
 pub fn load(path: &Path) -> Result<SceneFile, Diagnostic> {
@@ -645,22 +669,15 @@ impl Checker<'_> {
         }
         if let Some(m) = &r.pixel_model {
             let name = m.get_ref().as_str();
-            style.model = match name {
-                "box" => PixelModel::Box,
-                "box-seed" => PixelModel::BoxSeed,
-                "bed4" => PixelModel::BedOfNails4,
-                "bed8" => PixelModel::BedOfNails8,
-                "hex7" => PixelModel::Hex7,
-                "hex19" => PixelModel::Hex19,
-                "cone" => PixelModel::Cone,
-                "gauss" => PixelModel::Gaussian,
-                "hamming" => PixelModel::Hamming,
-                other => {
+            style.model = match model_named(name) {
+                Some(model) => model,
+                None => {
+                    let names: Vec<&str> = PixelModel::ALL.iter().map(|&m| model_name(m)).collect();
                     return self.err(
                         m.span(),
                         "render.pixel_model",
-                        format!("unknown pixel model `{other}`; one of box, box-seed, bed4, bed8, hex7, hex19, cone, gauss, hamming"),
-                    )
+                        format!("unknown pixel model `{name}`; one of {}", names.join(", ")),
+                    );
                 }
             };
         }
@@ -990,6 +1007,29 @@ mod tests {
     }
 
     const HEAD: &str = "[display]\nwidth = 16\nheight = 8\nformat = \"gray8\"\n";
+
+    /// Every model of the core has a scene-file name of its own, which
+    /// reads back as that model (through a scene file too), and the
+    /// gallery a label.
+    #[test]
+    fn every_pixel_model_has_its_own_name() {
+        let names: Vec<&str> = PixelModel::ALL.iter().map(|&m| model_name(m)).collect();
+        for (i, &m) in PixelModel::ALL.iter().enumerate() {
+            let name = model_name(m);
+            assert_ne!(name, "?", "{m:?} has no scene-file name");
+            assert!(!names[..i].contains(&name), "{name} twice");
+            assert_eq!(model_named(name), Some(m));
+            let text = format!("{HEAD}[render]\npixel_model = \"{name}\"\n");
+            let file = parse_str(&text).unwrap_or_else(|e| panic!("{name}: {e:?}"));
+            let Frame::Gray(scene) = &file.frame else {
+                panic!("{name}: a gray8 display gives a one-channel frame");
+            };
+            assert_eq!(scene.style.model, m, "{name}");
+        }
+        assert_eq!(model_named("nearest"), None);
+        let bad = parse_str(&format!("{HEAD}[render]\npixel_model = \"nearest\"\n"));
+        assert!(bad.is_err());
+    }
 
     #[test]
     fn primitives_keep_file_order_across_tables() {

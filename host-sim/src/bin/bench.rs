@@ -180,19 +180,6 @@ fn render_model(model: softedge::PixelModel) -> u64 {
     sum
 }
 
-/// The pixel models by their scene-file names.
-const MODELS: [(&str, softedge::PixelModel); 9] = [
-    ("box", softedge::PixelModel::Box),
-    ("box-seed", softedge::PixelModel::BoxSeed),
-    ("bed4", softedge::PixelModel::BedOfNails4),
-    ("bed8", softedge::PixelModel::BedOfNails8),
-    ("hex7", softedge::PixelModel::Hex7),
-    ("hex19", softedge::PixelModel::Hex19),
-    ("cone", softedge::PixelModel::Cone),
-    ("gauss", softedge::PixelModel::Gaussian),
-    ("hamming", softedge::PixelModel::Hamming),
-];
-
 /// The hidden-surface benchmark: the same torus tilted 60° (its near tube
 /// hides part of the far inner wall: 576 triangles, about half culled),
 /// projected once per frame into a triangle store, sorted front to back,
@@ -463,7 +450,7 @@ fn main() {
             return;
         }
         if let Some(name) = args.get(2).and_then(|a| a.strip_prefix("model-")) {
-            let model = MODELS.iter().find(|(n, _)| *n == name).map(|m| m.1);
+            let model = softedge_sim::scene_file::model_named(name);
             println!("checksum {}", model.map_or(0, render_model));
             return;
         }
@@ -563,7 +550,7 @@ fn main() {
     );
     println!("pixel models: the mesh's 288 triangles, flat gray, {W}x{H}, bands of {BAND_ROWS}:");
     let mut box_count = 0u64;
-    for (name, _) in MODELS {
+    for name in softedge::PixelModel::ALL.map(softedge_sim::scene_file::model_name) {
         match callgrind("1", &format!("model-{name}"), Some("*render_model*")) {
             Ok(v) => {
                 if name == "box" {

@@ -18,18 +18,23 @@ use super::{compose, lin, pct, sp, GalleryError, Panel};
 use crate::image::Image8;
 use crate::scene::{render, Primitive, Scene};
 
-/// The models in the order shown, with their labels.
-pub(super) const MODELS: [(PixelModel, &str); 9] = [
-    (PixelModel::Box, "BOX"),
-    (PixelModel::BoxSeed, "BOX SEED-001"),
-    (PixelModel::BedOfNails4, "BED 4X4"),
-    (PixelModel::BedOfNails8, "BED 8X8"),
-    (PixelModel::Hex7, "HEX 7"),
-    (PixelModel::Hex19, "HEX 19"),
-    (PixelModel::Cone, "CONE R=1"),
-    (PixelModel::Gaussian, "GAUSS S=1/2"),
-    (PixelModel::Hamming, "HAMMING E=2"),
-];
+/// A model's label on the sheet (the models are shown in
+/// `PixelModel::ALL`'s order).
+fn label(model: PixelModel) -> &'static str {
+    match model {
+        PixelModel::Box => "BOX",
+        PixelModel::BoxSeed => "BOX SEED-001",
+        PixelModel::BedOfNails4 => "BED 4X4",
+        PixelModel::BedOfNails8 => "BED 8X8",
+        PixelModel::Hex7 => "HEX 7",
+        PixelModel::Hex19 => "HEX 19",
+        PixelModel::Cone => "CONE R=1",
+        PixelModel::Gaussian => "GAUSS S=1/2",
+        PixelModel::Hamming => "HAMMING E=2",
+        // Non-exhaustive: a new model shows as "?" until it has a label.
+        _ => "?",
+    }
+}
 
 /// The content: 32x24, white on black.
 pub(super) fn scene() -> Scene<1> {
@@ -66,7 +71,8 @@ pub(super) fn sheet(
     let base = scene().with_band_rows(band_rows);
     let mut panels = Vec::new();
     let mut box_sum = None;
-    for (model, label) in MODELS {
+    for model in PixelModel::ALL {
+        let label = label(model);
         let style = RenderStyle {
             antialias: true,
             model,
@@ -93,4 +99,19 @@ pub(super) fn sheet(
         "PIXEL MODELS: BOX / BED-OF-NAILS / HEXAGONAL / CONE, GAUSS, HAMMING",
         &[panels, second],
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every model of the core has a label of its own on the sheet.
+    #[test]
+    fn every_pixel_model_has_a_label() {
+        let labels: Vec<&str> = PixelModel::ALL.into_iter().map(label).collect();
+        for (i, l) in labels.iter().enumerate() {
+            assert_ne!(*l, "?", "{:?} has no label", PixelModel::ALL[i]);
+            assert!(!labels[..i].contains(l), "{l} twice");
+        }
+    }
 }
