@@ -272,11 +272,15 @@ impl EdgeWalk {
     }
 
     /// Marks the walk as one that is walked for one band only and then
-    /// dropped (no cache keeps it): a band of at most [`DIRECT`] - 1 rows
-    /// meets at most [`DIRECT`] of its crossings, which are then evaluated
-    /// directly, one at a time as the walk reaches them, rather than by
-    /// setting up the stepping for the rest of the edge. The same spills
-    /// either way (both are the exact floor).
+    /// dropped (no cache keeps it). When the walk's tracker is set up with
+    /// at most about [`DIRECT`] rows of the band left (an edge crosses at
+    /// most one boundary a row: a row boundary for an x-major edge, a
+    /// column boundary for a y-major one, `dv <= du`), the crossings are
+    /// evaluated directly, one at a time as the walk reaches them, rather
+    /// than by setting up the stepping for the rest of the edge: the walk
+    /// will not need the rest. The same spills either way (both are the
+    /// exact floor); on the Cortex-M0 the 3-row screen without a cache
+    /// costs 19.0 M instead of 21.0 M.
     #[inline(always)]
     pub(crate) fn once(&mut self) {
         self.once = true;
