@@ -18,7 +18,7 @@
 //! [`Canvas::fill_triangle`] calls would be, with the same place in the
 //! drawing order (the walk cache's key): the same pixels, bit for bit.
 
-use super::{op_of, orient, triangle_box, Canvas, WalkKind};
+use super::{op_of, orient, triangle_box, Canvas};
 use crate::band::{ComposeOp, Paint};
 use crate::geom::{FinePoint, FINE_BITS};
 use crate::raster::DrawError;
@@ -167,16 +167,7 @@ impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
         let entries = list.entries();
         self.serial = base.wrapping_add(entries.len() as u32);
         let reach = self.reach;
-        // The rows an entry must meet: the band's own for the box pixel
-        // models, which draw a triangle's rows only (`fill_oriented` clips
-        // to them), the reach's margin beyond them for the others.
-        let (y_lo, y_hi) = match WalkKind::of(self.style) {
-            WalkKind::Box(_) => {
-                let band = self.buf.band();
-                (band.y0, band.y0 + i32::from(band.rows))
-            }
-            _ => (reach.y_lo, reach.y_hi),
-        };
+        let (y_lo, y_hi) = self.triangle_reach();
         for (i, t) in entries.iter().enumerate() {
             let rows = [i32::from(t.rows[0]), i32::from(t.rows[1])];
             if rows[1] < y_lo || rows[0] >= y_hi {

@@ -679,14 +679,11 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         colors: &[[u16; C]; 3],
         op: ComposeOp,
     ) {
-        // The box pixel models draw the triangle's own rows only: a band
-        // in the reach's margin gets nothing from it (`fill_oriented`
-        // would find so), so its plane is not looked for there.
-        if let WalkKind::Box(_) = WalkKind::of(self.style) {
-            let band = self.buf.band();
-            if rows[1] < band.y0 || rows[0] >= band.y0 + i32::from(band.rows) {
-                return;
-            }
+        // Not in a band of the reach's margin that gets nothing from it:
+        // its plane is not looked for there.
+        let (y_lo, y_hi) = self.triangle_reach();
+        if rows[1] < y_lo || rows[0] >= y_hi {
+            return;
         }
         if let Some(plane) = self.plane(serial, first, *v, *colors, rows[1]) {
             self.fill_oriented(serial, first, oriented, rows, &Paint::Plane(&plane), op);
@@ -765,6 +762,22 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             }
         }
         Some(plane)
+    }
+
+    /// The pixel rows a triangle's first and last must meet for it to
+    /// draw in this band (`first <= y_hi - 1`, `last >= y_lo`): the band's
+    /// own for the box pixel models, which draw a triangle's rows only
+    /// (`fill_oriented` clips to them), the reach's margin beyond them for
+    /// the others.
+    #[inline(always)]
+    fn triangle_reach(&self) -> (i32, i32) {
+        match WalkKind::of(self.style) {
+            WalkKind::Box(_) => {
+                let band = self.buf.band();
+                (band.y0, band.y0 + i32::from(band.rows))
+            }
+            _ => (self.reach.y_lo, self.reach.y_hi),
+        }
     }
 
     /// True when the box can touch the band (pixel models reach up to
