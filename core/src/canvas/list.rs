@@ -18,7 +18,7 @@
 //! [`Canvas::fill_triangle`] calls would be, with the same place in the
 //! drawing order (the walk cache's key): the same pixels, bit for bit.
 
-use super::{op_of, orient, triangle_box, Canvas};
+use super::{flat_color, op_of, orient, triangle_box, Canvas};
 use crate::band::{ComposeOp, Paint};
 use crate::geom::{FinePoint, FINE_BITS};
 use crate::raster::DrawError;
@@ -113,19 +113,14 @@ impl<'a, const C: usize> TriangleList<'a, C> {
         let b = triangle_box(&v);
         // In range, a pixel is within ±2049: 16 bits.
         let px = |c: i32| (c >> FINE_BITS) as i16;
-        let [c0, c1, c2] = colors;
-        let flat = c0 == c1 && c1 == c2;
+        let flat = flat_color(&colors);
         *entry = ListedTriangle {
             v,
-            colors: if flat {
-                [c0.map(|x| x.min(crate::LIN_MAX)); 3]
-            } else {
-                colors
-            },
+            colors: flat.map_or(colors, |c| [c; 3]),
             rows: [px(b.y0), px(b.y1)],
             cols: [px(b.x0), px(b.x1)],
             flip: orient(v) != v,
-            flat,
+            flat: flat.is_some(),
             op: op_of(blend, opacity),
         };
         self.len += 1;

@@ -653,11 +653,10 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         }
         let rows = [b.y0 >> FINE_BITS, b.y1 >> FINE_BITS];
         let oriented = orient(v);
-        let [c0, c1, c2] = colors;
-        if c0 == c1 && c1 == c2 {
+        if let Some(color) = flat_color(&colors) {
             // Oriented, its coverage is linear: triangles sharing an edge
             // add up exactly.
-            let paint = Paint::Flat(c0.map(|x| x.min(crate::LIN_MAX)));
+            let paint = Paint::Flat(color);
             self.fill_oriented(serial, first, &oriented, rows, &paint, op);
         } else {
             self.gouraud(serial, first, &v, &oriented, rows, &colors, op);
@@ -981,6 +980,14 @@ impl Outline for Mesh<'_> {
             }
         }
     }
+}
+
+/// A triangle's one colour when its three are equal, clamped to 12 bits
+/// (a flat paint); `None` for a Gouraud one.
+#[inline]
+fn flat_color<const C: usize>(colors: &[[u16; C]; 3]) -> Option<[u16; C]> {
+    let [c0, c1, c2] = colors;
+    (c0 == c1 && c1 == c2).then(|| c0.map(|x| x.min(crate::LIN_MAX)))
 }
 
 /// How a shape drawn with `blend` at `opacity` is composed.
