@@ -133,7 +133,7 @@ END {
         printf "| %.3fx |\n", screen[r, 3] / screen[r, 16]
     }
     printf "\nWhat the walk cache buys: the screen, softedge AA flat RGB, drawn directly and from a `TriangleList`, by walk-cache slots (caller-provided, `WalkSlot::<3>::SIZE` bytes each), "
-    printf "and the RAM of the 3-row frame (band buffers, %s bytes, + cache; the list is 56 bytes a triangle more):\n\n", group(b3)
+    printf "and the RAM of the 3-row frame (band buffers, %s bytes, + cache; the list is 60 bytes a triangle more):\n\n", group(b3)
     printf "| walk-cache slots | cache bytes | 16-row bands | 3-row bands | 3 rows / 16 rows | listed, 16-row | listed, 3-row | 3 rows / 16 rows | 3-row RAM, band + cache |\n"
     printf "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n"
     for (i = 1; i <= nk; i++) {

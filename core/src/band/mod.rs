@@ -575,6 +575,17 @@ impl<const C: usize> BandBuffer<'_, C> {
 }
 
 impl BandDeltas<'_> {
+    /// The same rows for one more walk: a copy of the few words a walk
+    /// keeps in registers (a walk writing through a reference reloads
+    /// them at every change).
+    #[inline(always)]
+    pub(crate) fn lend(&mut self) -> BandDeltas<'_> {
+        BandDeltas {
+            cover: &mut *self.cover,
+            ..*self
+        }
+    }
+
     /// The start of frame row `y`'s scratch row, if the walk writes it.
     #[inline]
     fn row(&self, y: i32) -> Option<usize> {

@@ -19,7 +19,7 @@
 
 use core::ops::Range;
 
-use crate::band::BandBuffer;
+use crate::band::BandDeltas;
 use crate::edge::{AliasedWalk, AreaMode, Canon, EdgeWalk};
 use crate::geom::FinePoint;
 use crate::shade::Plane;
@@ -362,7 +362,7 @@ pub(crate) fn walk_edge<const C: usize>(
     mode: AreaMode,
     cols: &Range<i32>,
     rows: Range<i32>,
-    buf: &mut BandBuffer<'_, C>,
+    out: &mut BandDeltas<'_>,
 ) {
     let tag = mode as i32;
     let mut cache = cache;
@@ -370,7 +370,7 @@ pub(crate) fn walk_edge<const C: usize>(
         .as_deref_mut()
         .and_then(|c| c.walk(serial, edge, p0, p1, tag))
     {
-        w.walk_band(rows, buf);
+        w.walk_into(rows, out.lend());
         return;
     }
     let Some(e) = Canon::new(p0, p1) else {
@@ -388,7 +388,7 @@ pub(crate) fn walk_edge<const C: usize>(
             }
             if let Entry::Walk(w) = entry {
                 w.clip(cols.clone());
-                w.walk_band(rows, buf);
+                w.walk_into(rows, out.lend());
             }
             return;
         }
@@ -397,5 +397,5 @@ pub(crate) fn walk_edge<const C: usize>(
     w.clip(cols.clone());
     // Not kept: set up again if a later band needs it.
     w.once();
-    w.walk_band(rows, buf);
+    w.walk_into(rows, out.lend());
 }

@@ -9,10 +9,23 @@
 //! (issue 14: 80 bands of 3 rows call the closure 80 times). A
 //! [`TriangleList`] does that once per frame:
 //! [`push`](TriangleList::push) checks the vertices, orients the triangle
-//! and keeps its rows; each band's [`Canvas::fill_triangles`] tests every
-//! entry's rows against the band (two compares) and draws only those that
-//! meet it. (A Gouraud triangle's plane is fitted once per frame by the
-//! walk cache, as for a triangle drawn directly.)
+//! and keeps its rows; each band's [`Canvas::fill_triangles`] tests the
+//! entries' rows against the band (two compares each) and draws only those
+//! that meet it. (A Gouraud triangle's plane is fitted once per frame by
+//! the walk cache, as for a triangle drawn directly.)
+//!
+//! Entries also keep two running bounds so that a band need not test them
+//! all: `until`, the last row any entry up to this one reaches (a prefix
+//! maximum, so the entries that ended above a band are a prefix, found by
+//! a binary search), and `from`, a lower bound of the first row of every
+//! entry from this one on (a suffix minimum, kept by [`push`] with a
+//! bounded walk back, so the entries that start below a band are a
+//! suffix). A list recorded roughly top to bottom, as a user interface or
+//! a mesh usually is, then costs a band the entries near it, not the
+//! frame's; in any other order the bounds skip nothing and cost two
+//! binary searches a band.
+//!
+//! [`push`]: TriangleList::push
 //!
 //! The `n`-th entry is drawn exactly as the `n`-th of as many
 //! [`Canvas::fill_triangle`] calls would be, with the same place in the
@@ -26,7 +39,7 @@ use crate::style::{Blend, Opacity};
 
 /// One entry of a [`TriangleList`]; make arrays of them with
 /// [`ListedTriangle::EMPTY`]. An entry is [`ListedTriangle::SIZE`] bytes
-/// (56 for three channels, 44 for one, on thumbv6m and x86-64).
+/// (60 for three channels, 48 for one, on thumbv6m and x86-64).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ListedTriangle<const C: usize> {
     /// The vertices as given (a Gouraud plane is fitted from them).
@@ -36,6 +49,11 @@ pub struct ListedTriangle<const C: usize> {
     /// the vertices (the coordinate range, ±2048 px, fits 16 bits).
     rows: [i16; 2],
     cols: [i16; 2],
+    /// The last row of any entry up to this one (a prefix maximum).
+    until: i16,
+    /// At most the first row of every entry from this one on (a suffix
+    /// minimum, or lower), where the list's `from_valid` says it holds.
+    from: i16,
     /// True when the vertices' coverage order is `v[0], v[2], v[1]`.
     flip: bool,
     /// True for one colour, then `colors[0]` clamped to 12 bits.
@@ -50,6 +68,8 @@ impl<const C: usize> ListedTriangle<C> {
         colors: [[0; C]; 3],
         rows: [0; 2],
         cols: [0; 2],
+        until: 0,
+        from: 0,
         flip: false,
         flat: false,
         op: ComposeOp::Over(Opacity::OPAQUE),
@@ -83,12 +103,25 @@ impl<const C: usize> Default for ListedTriangle<C> {
 pub struct TriangleList<'a, const C: usize> {
     store: &'a mut [ListedTriangle<C>],
     len: usize,
+    /// Entries from this index on have `from` bounds that hold (a walk
+    /// back that [`FROM_WALK`] cut short leaves the ones before it stale).
+    from_valid: usize,
 }
+
+/// Most entries one [`TriangleList::push`] walks back to lower their
+/// `from` bounds: a list pushed in falling rows would otherwise cost
+/// quadratic time; past it, the entries not reached lose their bound
+/// (their bands test every entry after the ended ones).
+const FROM_WALK: usize = 16;
 
 impl<'a, const C: usize> TriangleList<'a, C> {
     /// An empty list over `store`.
     pub fn new(store: &'a mut [ListedTriangle<C>]) -> Self {
-        Self { store, len: 0 }
+        Self {
+            store,
+            len: 0,
+            from_valid: 0,
+        }
     }
 
     /// Appends a triangle: one colour per vertex (all equal for a flat
@@ -109,21 +142,39 @@ impl<'a, const C: usize> TriangleList<'a, C> {
         if let Some(&p) = v.iter().find(|p| !p.in_range()) {
             return Err(DrawError::FineCoord(p));
         }
-        let entry = self.store.get_mut(self.len).ok_or(DrawError::ListFull)?;
+        let n = self.len;
+        let (done, rest) = self.store.split_at_mut(n.min(self.store.len()));
+        let entry = rest.first_mut().ok_or(DrawError::ListFull)?;
         let b = triangle_box(&v);
         // In range, a pixel is within ±2049: 16 bits.
         let px = |c: i32| (c >> FINE_BITS) as i16;
+        let rows = [px(b.y0), px(b.y1)];
         let flat = flat_color(&colors);
         *entry = ListedTriangle {
             v,
             colors: flat.map_or(colors, |c| [c; 3]),
-            rows: [px(b.y0), px(b.y1)],
+            rows,
             cols: [px(b.x0), px(b.x1)],
+            until: done.last().map_or(rows[1], |t| t.until.max(rows[1])),
+            from: rows[0],
             flip: orient(v) != v,
             flat: flat.is_some(),
             op: op_of(blend, opacity),
         };
-        self.len += 1;
+        // The earlier entries' `from` bounds must not exceed this first
+        // row: they are non-decreasing, so those to lower are the last few.
+        for (walked, t) in done.iter_mut().rev().enumerate() {
+            if t.from <= rows[0] {
+                break;
+            }
+            if walked == FROM_WALK {
+                // Cut short: the entries up to this one keep a stale bound.
+                self.from_valid = self.from_valid.max(n - walked);
+                break;
+            }
+            t.from = rows[0];
+        }
+        self.len = n + 1;
         Ok(())
     }
 
@@ -145,10 +196,28 @@ impl<'a, const C: usize> TriangleList<'a, C> {
     /// Empties the list (for the next frame).
     pub fn clear(&mut self) {
         self.len = 0;
+        self.from_valid = 0;
     }
 
     fn entries(&self) -> &[ListedTriangle<C>] {
         self.store.get(..self.len).unwrap_or_default()
+    }
+
+    /// The entries that may meet rows `y_lo..y_hi`, and the index of the
+    /// first: those before it ended above `y_lo`, those after the slice
+    /// start at or below `y_hi`.
+    fn window(&self, y_lo: i32, y_hi: i32) -> (usize, &[ListedTriangle<C>]) {
+        let all = self.entries();
+        let start = all.partition_point(|t| i32::from(t.until) < y_lo);
+        // Where the bounds hold, entries from `end` on start at or
+        // below `y_hi`.
+        let valid = self.from_valid.max(start).min(all.len());
+        let end = valid
+            + all
+                .get(valid..)
+                .unwrap_or_default()
+                .partition_point(|t| i32::from(t.from) < y_hi);
+        (start, all.get(start..end).unwrap_or_default())
     }
 }
 
@@ -156,14 +225,15 @@ impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
     /// Draws every triangle of `list`, in its order, as as many
     /// [`fill_triangle`](Self::fill_triangle) calls would (the same
     /// places in the drawing order, the same pixels); a triangle whose
-    /// rows miss the band costs two compares.
+    /// rows miss the band costs two compares, or nothing when it lies
+    /// beyond the list's running bounds (see the module's doc).
     pub fn fill_triangles(&mut self, list: &TriangleList<'_, C>) {
         let base = self.serial;
-        let entries = list.entries();
-        self.serial = base.wrapping_add(entries.len() as u32);
+        self.serial = base.wrapping_add(list.len() as u32);
         let reach = self.reach;
         let (y_lo, y_hi) = self.triangle_reach();
-        for (i, t) in entries.iter().enumerate() {
+        let (start, entries) = list.window(y_lo, y_hi);
+        for (i, t) in (start..).zip(entries) {
             let rows = [i32::from(t.rows[0]), i32::from(t.rows[1])];
             if rows[1] < y_lo || rows[0] >= y_hi {
                 continue;
@@ -347,9 +417,97 @@ mod tests {
     }
 
     #[test]
+    fn the_window_holds_every_entry_that_meets_the_rows() {
+        // Lists in rising, falling, shuffled and nearly sorted row order,
+        // against a plain test of every entry; the falling ones cut the
+        // bounds' walk back short.
+        let mut rng = Lcg(0x3a1d_0e55_51de_b0a7);
+        for case in 0..40 {
+            let n = 1 + case * 7;
+            let mut tops: Vec<i32> = (0..n).map(|_| rng.below(300) as i32 - 30).collect();
+            match case % 4 {
+                0 => tops.sort_unstable(),
+                1 => tops.sort_unstable_by(|a, b| b.cmp(a)),
+                2 => {}
+                _ => {
+                    tops.sort_unstable();
+                    for t in &mut tops {
+                        *t += rng.below(7) as i32 - 3;
+                    }
+                }
+            }
+            let mut store = std::vec![ListedTriangle::<3>::EMPTY; n];
+            let mut list = TriangleList::new(&mut store);
+            for &top in &tops {
+                let h = rng.below(60) as i32;
+                let (x, y) = (rng.below(200) as i32 * 1024, top * 1024 + 100);
+                let v = [
+                    FinePoint::new(x, y),
+                    FinePoint::new(x + 5000, y + h * 1024),
+                    FinePoint::new(x - 3000, y + (h / 2) * 1024),
+                ];
+                list.push(v, [[1000; 3]; 3], Blend::Over, Opacity::OPAQUE)
+                    .unwrap();
+            }
+            let all = list.entries();
+            for y_lo in -40..300 {
+                for y_hi in [y_lo + 1, y_lo + 3, y_lo + 16] {
+                    let (start, w) = list.window(y_lo, y_hi);
+                    for (i, t) in all.iter().enumerate() {
+                        let meets = i32::from(t.rows[1]) >= y_lo && i32::from(t.rows[0]) < y_hi;
+                        if meets {
+                            assert!(
+                                i >= start && i < start + w.len(),
+                                "case {case}: entry {i} meets {y_lo}..{y_hi}, window {start}+{}",
+                                w.len()
+                            );
+                        }
+                    }
+                }
+            }
+            // A sorted list's window is its entries near the rows.
+            if case % 4 == 0 && n > 100 {
+                let (_, w) = list.window(100, 103);
+                assert!(w.len() < n / 2, "case {case}: {} of {n}", w.len());
+            }
+        }
+    }
+
+    #[test]
+    fn lists_in_any_row_order_give_the_bits_of_their_triangles_drawn_one_by_one() {
+        let mut rng = Lcg(0x51de_0f0e_57a1_1ed5);
+        for case in 0..6 {
+            let mut tris = triangles(&mut rng, 40);
+            let top = |t: &Tri| t.0.iter().map(|p| p.y).min().unwrap_or(0);
+            match case % 3 {
+                0 => tris.sort_by_key(top),
+                1 => tris.sort_by_key(|t| core::cmp::Reverse(top(t))),
+                _ => {}
+            }
+            let mut store = std::vec![ListedTriangle::<3>::EMPTY; tris.len()];
+            let mut list = TriangleList::new(&mut store);
+            for &(v, c, b, o) in &tris {
+                list.push(v, c, b, o).unwrap();
+            }
+            let list = &list;
+            let style = RenderStyle::default();
+            let direct = |c: &mut Canvas<'_, '_, 3>| {
+                for &(v, col, b, o) in &tris {
+                    c.fill_triangle(v, col, b, o).unwrap();
+                }
+            };
+            let (whole, _) = frame(H, 64, style, direct);
+            for rows in [1, 3, 7] {
+                let (l, _) = frame(rows, 64, style, |c| c.fill_triangles(list));
+                assert_eq!(l, whole, "case {case}, {rows} rows");
+            }
+        }
+    }
+
+    #[test]
     fn entries_are_the_documented_size() {
-        assert_eq!(ListedTriangle::<3>::SIZE, 56);
-        assert_eq!(ListedTriangle::<1>::SIZE, 44);
+        assert_eq!(ListedTriangle::<3>::SIZE, 60);
+        assert_eq!(ListedTriangle::<1>::SIZE, 48);
     }
 
     #[test]

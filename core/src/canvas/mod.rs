@@ -716,6 +716,8 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         let cols = band.column_range();
         let buf = &mut *self.buf;
         let mut cache = self.cache.as_mut();
+        // The three walks write the same rows of the scratch.
+        let mut out = buf.deltas(rows.clone());
         let [p, q, r] = *o;
         for (k, (p0, p1)) in [(0, (p, q)), (1, (q, r)), (2, (r, p))] {
             let (ylo, yhi) = (p0.y.min(p1.y) >> FINE_BITS, p0.y.max(p1.y) >> FINE_BITS);
@@ -731,7 +733,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
                 mode,
                 &cols,
                 rows.clone(),
-                buf,
+                &mut out,
             );
         }
         buf.compose(rows.start, rows.end, Coverage::Signed(1), paint, op);
@@ -859,7 +861,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
                     mode,
                     &cols,
                     rows.clone(),
-                    buf,
+                    &mut buf.deltas(rows.clone()),
                 ),
                 WalkKind::Aliased => {
                     if let Some(w) = cache
