@@ -1,5 +1,6 @@
 //! [`Polyline`] and [`Line`]: open paths of straight segments.
 
+use crate::arith::imul_wide;
 use crate::geom::{FinePoint, PathSink};
 use crate::path::segment::SegmentSink;
 use crate::path::{StrokeAlignment, StrokeError, StrokeStyle, Stroker, Tolerance};
@@ -166,14 +167,25 @@ impl<'a, P: Copy + Into<FinePoint>> Polygon<'a, P> {
     }
 
     /// Twice the signed area (positive: clockwise on screen, y down).
+    /// Every shape's description runs it, in every band: the products are
+    /// `i32 x i32` in full ([`imul_wide`]: four 32-bit multiplies; an
+    /// `i128` product is several 64-bit library calls on the Cortex-M0),
+    /// summed in `i128`, and the closing edge is taken last instead of
+    /// wrapping an index (a division per vertex).
     fn area2(&self) -> i128 {
-        let n = self.vertices.len();
-        let mut a = 0i128;
-        for (k, &v) in self.vertices.iter().enumerate() {
-            let (p, q) = (self.vertex(v), self.vertex(self.vertices[(k + 1) % n]));
-            a += i128::from(p.x) * i128::from(q.y) - i128::from(q.x) * i128::from(p.y);
+        let cross = |p: FinePoint, q: FinePoint| {
+            i128::from(imul_wide(p.x, q.y)) - i128::from(imul_wide(q.x, p.y))
+        };
+        let mut vs = self.vertices.iter().map(|&v| self.vertex(v));
+        let Some(first) = vs.next() else {
+            return 0;
+        };
+        let (mut a, mut p) = (0i128, first);
+        for q in vs {
+            a += cross(p, q);
+            p = q;
         }
-        a
+        a + cross(p, first)
     }
 }
 
@@ -197,5 +209,53 @@ impl<P: Copy + Into<FinePoint>> Shape for Polygon<'_, P> {
             (0..n).rev().for_each(|k| emit(k, k == n - 1));
         }
         sink.close();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use std::vec::Vec;
+
+    use super::*;
+    use crate::path::testing::Lcg;
+
+    /// The shoelace sum as written down, in `i128` throughout.
+    fn shoelace(v: &[FinePoint]) -> i128 {
+        let n = v.len();
+        (0..n)
+            .map(|k| {
+                let (p, q) = (v[k], v[(k + 1) % n]);
+                i128::from(p.x) * i128::from(q.y) - i128::from(q.x) * i128::from(p.y)
+            })
+            .sum()
+    }
+
+    #[test]
+    fn twice_the_area_is_the_shoelace_sum_at_any_coordinates() {
+        let mut rng = Lcg(0x0a2e_a2a2_5eed_0001);
+        for case in 0..400 {
+            let n = (case % 9) as usize;
+            // Small, in-range and extreme coordinates (the translation
+            // saturates at the `i32` limits).
+            let span = [1u64 << 12, 1 << 22, 1 << 32][case % 3];
+            let v: Vec<FinePoint> = (0..n)
+                .map(|_| {
+                    let c = |r: &mut Lcg| (r.below(span) as i64 - (span / 2) as i64) as i32;
+                    FinePoint::new(c(&mut rng), c(&mut rng))
+                })
+                .collect();
+            let t = if case % 5 == 0 {
+                FinePoint::new(i32::MAX - 7, i32::MIN + 3)
+            } else {
+                FinePoint::new(0, 0)
+            };
+            let p = Polygon {
+                translate: t,
+                vertices: &v,
+            };
+            let moved: Vec<FinePoint> = v.iter().map(|&q| p.vertex(q)).collect();
+            assert_eq!(p.area2(), shoelace(&moved), "case {case}");
+        }
     }
 }
