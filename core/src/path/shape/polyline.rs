@@ -235,7 +235,7 @@ mod tests {
     fn twice_the_area_is_the_shoelace_sum_at_any_coordinates() {
         let mut rng = Lcg(0x0a2e_a2a2_5eed_0001);
         for case in 0..400 {
-            let n = (case % 9) as usize;
+            let n = case % 9;
             // Small, in-range and extreme coordinates (the translation
             // saturates at the `i32` limits).
             let span = [1u64 << 12, 1 << 22, 1 << 32][case % 3];
