@@ -67,6 +67,28 @@ pub(crate) fn mul_wide(a: u32, b: u32) -> u64 {
     (u64::from(a1 * b1) << 32) + (mid << 16) + u64::from(a0 * b0)
 }
 
+/// `a * b` for `|a b| < 2^31` (the caller states why): one 32-bit
+/// multiply where `i64` would call the Cortex-M0's 64-bit multiply
+/// routine.
+#[inline]
+pub(crate) fn mul_small(a: i64, b: i64) -> i64 {
+    i64::from((a as i32).wrapping_mul(b as i32))
+}
+
+/// `a * b` for `|a b| < 2^63` (the caller states why), from the halves
+/// of `a`: [`mul_wide`] of the low one and a 32-bit multiply of the high
+/// one, which the bound keeps below `2^31`.
+#[inline]
+pub(crate) fn mul_i64_i32(a: i64, b: i32) -> i64 {
+    let (ua, ub) = (a.unsigned_abs(), b.unsigned_abs());
+    let p = mul_wide(ua as u32, ub) + (u64::from(((ua >> 32) as u32).wrapping_mul(ub)) << 32);
+    if (a < 0) != (b < 0) {
+        (p as i64).wrapping_neg()
+    } else {
+        p as i64
+    }
+}
+
 /// `a * b` in full for signed `a`, `b` (see [`mul_wide`]).
 #[inline]
 pub(crate) fn imul_wide(a: i32, b: i32) -> i64 {
@@ -121,6 +143,46 @@ mod tests {
             }
         }
         assert_eq!(udivmod(5, 0), (0, 0));
+    }
+
+    #[test]
+    fn narrow_products_are_the_full_products_within_their_bounds() {
+        // A simple generator: the crate's test Lcg lives in `path`.
+        let mut x = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        for _ in 0..20_000 {
+            let r = next();
+            // mul_small: |a b| < 2^31.
+            let bits = (r % 31) as u32;
+            let a = (next() % (1 << bits)) as i64 * if r & 1 == 0 { 1 } else { -1 };
+            let b_lim = (1i64 << 31) / a.abs().max(1);
+            let b = (next() % b_lim as u64) as i64 * if r & 2 == 0 { 1 } else { -1 };
+            assert_eq!(i128::from(mul_small(a, b)), i128::from(a) * i128::from(b));
+            // mul_i64_i32: |a b| < 2^63, b any i32.
+            let b = next() as i32;
+            let a_lim = (1u64 << 63) / u64::from(b.unsigned_abs().max(1));
+            let a = (next() % a_lim) as i64 * if r & 4 == 0 { 1 } else { -1 };
+            assert_eq!(
+                i128::from(mul_i64_i32(a, b)),
+                i128::from(a) * i128::from(b),
+                "{a} * {b}"
+            );
+        }
+        for (a, b) in [
+            (0i64, i32::MIN),
+            (-1, i32::MIN),
+            (1 << 31, i32::MIN + 1),
+            (i64::MAX, 1),
+            (i64::MIN + 1, -1),
+            ((1 << 32) - 1, i32::MAX),
+        ] {
+            assert_eq!(i128::from(mul_i64_i32(a, b)), i128::from(a) * i128::from(b));
+        }
     }
 
     #[test]

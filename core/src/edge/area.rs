@@ -2,7 +2,7 @@
 //! columns of an edge. A few times per edge; divides in `u64`/`i64`.
 
 use super::canon::Canon;
-use crate::arith::{div_floor, divmod_floor, udivmod};
+use crate::arith::{div_floor, divmod_floor, imul_wide, mul_i64_i32, mul_small, mul_wide, udivmod};
 use crate::geom::FINE_BITS;
 use crate::COVER_BITS;
 
@@ -39,32 +39,45 @@ pub(crate) fn clamped_area(e: &Canon, ulo: i64, uhi: i64, vlo: i64, vhi: i64) ->
         i64::from(e.v1),
     );
     let (du, dv) = (i64::from(e.du), i64::from(e.dv));
-    let flat = |len: i64, v: i64| len.max(0) * (v - vlo).min(h).max(0);
-    // The two flat extensions beyond the end points, in fine units².
+    // The products below are in 32 bits, or 32 x 32 -> 64, where the
+    // ranges allow (each stated; the Cortex-M0 has no 64-bit multiply):
+    // coordinates are within `±2^22`, `du, dv <= 2^22`, and a cell is at
+    // most `N = 2^10` wide and high. A flat part: at most `N` by `h`.
+    let flat = |len: i64, v: i64| mul_small(len.max(0), (v - vlo).min(h).max(0));
+    // The two flat extensions beyond the end points, in fine units²
+    // (below `2^21`).
     let mut whole = flat(uhi.min(u0) - ulo, v0) + flat(uhi - ulo.max(u1), v1);
     let (p, q) = (ulo.max(u0), uhi.min(u1));
-    let one_division = (du as u64) * (dv as u64) <= ONE_DIVISION_LIMIT;
+    let dudv = mul_wide(e.du as u32, e.dv as u32);
+    let one_division = dudv <= ONE_DIVISION_LIMIT;
     // The line part as `whole + frac / (2 du dv)`, `frac` in (-2^47, 2^47).
     let mut frac = 0i64;
     if p < q {
-        let gp = (v0 - vlo) * du + (p - u0) * dv;
-        let gq = gp + (q - p) * dv;
-        let hd = h * du;
+        // `v0 - vlo` and `p - u0` within `±2^23`, `q - p <= N`, `h <= N`.
+        let gp = imul_wide((v0 - vlo) as i32, e.du) + imul_wide((p - u0) as i32, e.dv);
+        let gq = gp + imul_wide((q - p) as i32, e.dv);
+        let hd = imul_wide(h as i32, e.du);
         if dv == 0 {
             whole += flat(q - p, v0);
         } else if gq <= 0 {
             // Wholly at or below vlo: nothing.
         } else if gp >= hd {
             // Wholly at or above vhi: the full height.
-            whole += h * (q - p);
+            whole += mul_small(h, q - p);
         } else if one_division {
-            let den = 2 * du * dv;
-            let mut t = whole * den + (q - p) * (gp + gq) * dv;
+            // `den <= 2^39`, `whole < 2^21`: below `2^60`. `gp + gq` is
+            // below `2^35` in magnitude, times `q - p` below `2^45`, times
+            // `dv` the term bound above. Squares: `|g| < (q - p) dv <=
+            // 2^32` where they are taken (`gp < 0 < gq`, `gp < hd < gq`).
+            let den = 2 * dudv as i64;
+            let mut t = mul_i64_i32(den, whole as i32)
+                + mul_i64_i32(mul_i64_i32(gp + gq, (q - p) as i32), e.dv);
+            let square = |g: i64| mul_wide(g.unsigned_abs() as u32, g.unsigned_abs() as u32) as i64;
             if gp < 0 {
-                t += gp * gp;
+                t += square(gp);
             }
             if gq > hd {
-                t -= (gq - hd) * (gq - hd);
+                t -= square(gq - hd);
             }
             let (area, _) = udivmod(t.max(0) as u64, (den * FINE2_PER_AREA) as u64);
             return area as i32;
