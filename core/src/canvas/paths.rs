@@ -43,6 +43,9 @@ impl Bounds {
 }
 
 impl PathSink for Bounds {
+    fn needs_clockwise(&self) -> bool {
+        false
+    }
     fn move_to(&mut self, p: FinePoint) {
         self.add(p);
     }

@@ -142,6 +142,15 @@ pub trait PathSink {
     fn cubic_to(&mut self, c1: FinePoint, c2: FinePoint, p: FinePoint);
     /// Closes the current contour.
     fn close(&mut self);
+
+    /// Whether the sink needs closed contours clockwise on screen, as
+    /// [`Shape::describe`](crate::path::Shape::describe) promises (the
+    /// default). A sink that only collects points (a bounding box) says
+    /// no, and a shape whose orientation costs work to find (a polygon:
+    /// its signed area) may then skip it.
+    fn needs_clockwise(&self) -> bool {
+        true
+    }
 }
 
 #[cfg(test)]

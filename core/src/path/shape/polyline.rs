@@ -194,6 +194,8 @@ impl<P: Copy + Into<FinePoint>> Shape for Polygon<'_, P> {
         if self.vertices.is_empty() {
             return;
         }
+        // A box needs no orientation (every band finds the shape's).
+        let forward = !sink.needs_clockwise() || self.area2() >= 0;
         let mut emit = |k: usize, first: bool| {
             let p = self.vertex(self.vertices[k]);
             if first {
@@ -203,7 +205,7 @@ impl<P: Copy + Into<FinePoint>> Shape for Polygon<'_, P> {
             }
         };
         let n = self.vertices.len();
-        if self.area2() >= 0 {
+        if forward {
             (0..n).for_each(|k| emit(k, k == 0));
         } else {
             (0..n).rev().for_each(|k| emit(k, k == n - 1));
@@ -229,6 +231,48 @@ mod tests {
                 i128::from(p.x) * i128::from(q.y) - i128::from(q.x) * i128::from(p.y)
             })
             .sum()
+    }
+
+    /// The points a description sends, and whether the sink asks for
+    /// clockwise contours.
+    struct Points(Vec<FinePoint>, bool);
+
+    impl PathSink for Points {
+        fn needs_clockwise(&self) -> bool {
+            self.1
+        }
+        fn move_to(&mut self, p: FinePoint) {
+            self.0.push(p);
+        }
+        fn line_to(&mut self, p: FinePoint) {
+            self.0.push(p);
+        }
+        fn quad_to(&mut self, _: FinePoint, p: FinePoint) {
+            self.0.push(p);
+        }
+        fn cubic_to(&mut self, _: FinePoint, _: FinePoint, p: FinePoint) {
+            self.0.push(p);
+        }
+        fn close(&mut self) {}
+    }
+
+    #[test]
+    fn a_polygon_is_described_clockwise_unless_the_sink_needs_no_order() {
+        let f = FinePoint::new;
+        let ccw = [f(0, 0), f(0, 4096), f(4096, 4096), f(4096, 0)];
+        let p = Polygon::new(&ccw[..]);
+        assert!(p.area2() < 0);
+        let mut cw = Points(Vec::new(), true);
+        p.describe(&mut cw);
+        assert!(shoelace(&cw.0) > 0);
+        let mut any = Points(Vec::new(), false);
+        p.describe(&mut any);
+        assert_eq!(any.0, ccw);
+        let mut sorted = cw.0.clone();
+        sorted.sort_by_key(|q| (q.x, q.y));
+        let mut given = any.0.clone();
+        given.sort_by_key(|q| (q.x, q.y));
+        assert_eq!(sorted, given, "the same points either way");
     }
 
     #[test]
