@@ -178,13 +178,14 @@ struct Resume {
 /// of it, one that runs up `-`; so the sum over the edges of closed
 /// contours is, in every pixel, the integral of the winding number.
 #[derive(Debug, Clone, Copy)]
+#[repr(C)]
 pub struct EdgeWalk {
     /// The set-up: what the walk of every band reads.
     g: Geom,
-    /// The crossing constants, once a walk has needed them.
-    cross: Option<Crossings>,
     /// Where the last band's walk stopped (stepped in place by the next).
     resume: Option<Resume>,
+    /// The crossing constants, once a walk has needed them.
+    cross: Option<Crossings>,
     /// Walked for one band and then dropped ([`once`](Self::once)): its
     /// crossing tracker needs only that band's crossings.
     once: bool,
