@@ -77,15 +77,15 @@ const H: u16 = 240;
 /// Rows per band. Per band, every shape that reaches it is described
 /// again (its curves' vertices computed where they meet the band) and its
 /// edges there set up or resumed, and on the Cortex-M0 that, more than
-/// the pixels, is what a frame costs: this panel costs 33.2 M
-/// instructions a whole frame in 16-row bands and 23.1 M in 40-row ones,
-/// a partial redraw 11.2 M and 7.8 M (`bench-m0`, boards/README.md). 40
+/// the pixels, is what a frame costs: this panel costs 27.2 M
+/// instructions a whole frame in 16-row bands and 20.3 M in 40-row ones,
+/// a partial redraw 8.5 M and 6.3 M (`bench-m0`, boards/README.md). 40
 /// rows divide the panel into 6 bands; their buffers take 154 240 bytes,
 /// 58 % of the RP2040's 264 KiB.
 const BAND_ROWS: u16 = 40;
 /// `i32`s of the accumulation buffer: 240 x 40 pixels x 3 channels.
 const ACC_LEN: usize = BandBuffer::<3>::acc_len(W, BAND_ROWS);
-/// `i32`s of the coverage scratch: (240 + 2) x 40.
+/// `i32`s of the coverage scratch: (240 + 4) x 40.
 const COVER_LEN: usize = BandBuffer::<3>::cover_len(W, BAND_ROWS);
 /// Walk-cache slots: an edge that goes on below a band can keep its walk
 /// in one, so that the next band resumes it instead of setting it up
@@ -93,7 +93,7 @@ const COVER_LEN: usize = BandBuffer::<3>::cover_len(W, BAND_ROWS);
 /// has 44 that cross a band boundary, and on the Cortex-M0 16 slots
 /// changed a frame by under 0.2 % (a little slower, the look-ups cost
 /// what the saved set-ups did), so it runs without; each slot is
-/// `WalkSlot::<3>::SIZE` = 456 bytes. Scenes of long edges (large
+/// `WalkSlot::<3>::SIZE` = 368 bytes. Scenes of long edges (large
 /// triangles, Gouraud meshes, whose planes are cached too) gain more.
 const SLOTS: usize = 0;
 
