@@ -347,26 +347,42 @@ impl<'a, const C: usize> WalkCache<'a, C> {
     }
 }
 
-/// Walks edge `edge` of shape `serial`, `p0 -> p1` in `mode`, over frame
-/// rows `rows` of `buf` (whose columns are `cols`): resumed from `cache`
-/// when it holds the edge's walk, else set up, and kept in a free slot if
-/// it goes on below `rows`.
+/// What the edge walks of one shape in one band share (one reference
+/// instead of four arguments per edge: the Cortex-M0 passes four in
+/// registers, the rest on the stack).
+pub(crate) struct ShapeBand {
+    /// The shape's place in the drawing order.
+    pub serial: u32,
+    pub mode: AreaMode,
+    /// The band's columns, and the shape's rows in the band.
+    pub cols: Range<i32>,
+    pub rows: Range<i32>,
+}
+
+/// Walks edge `edge` of shape `shape.serial`, `p0 -> p1` in `shape.mode`,
+/// over frame rows `shape.rows` into `out` (a band's scratch for those
+/// rows, whose columns are `shape.cols`): resumed from `cache` when it
+/// holds the edge's walk, else set up, and kept in a free slot if it goes
+/// on below the rows.
 ///
 /// A walk is a few hundred bytes, and on the Cortex-M0 a copy of one costs
 /// about as much as walking a short edge: the walk is set up where it
 /// stays (in its slot, over the ended walk there, or on the stack), never
 /// moved.
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn walk_edge<const C: usize>(
     cache: Option<&mut WalkCache<'_, C>>,
-    serial: u32,
+    shape: &ShapeBand,
     edge: u32,
     (p0, p1): (FinePoint, FinePoint),
-    mode: AreaMode,
-    cols: &Range<i32>,
-    rows: Range<i32>,
     out: &mut BandDeltas<'_>,
 ) {
+    let ShapeBand {
+        serial,
+        mode,
+        ref cols,
+        ref rows,
+    } = *shape;
+    let rows = rows.clone();
     let tag = mode as i32;
     let mut cache = cache;
     if let Some(w) = cache

@@ -28,6 +28,7 @@ pub(crate) mod paths;
 #[cfg(feature = "embedded-graphics")]
 mod target;
 
+use cache::ShapeBand;
 pub use cache::{WalkCache, WalkSlot};
 pub use list::{ListedTriangle, TriangleList};
 
@@ -713,11 +714,17 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         if rows.start >= rows.end {
             return;
         }
-        let cols = band.column_range();
         let buf = &mut *self.buf;
         let mut cache = self.cache.as_mut();
         // The three walks write the same rows of the scratch.
         let mut out = buf.deltas(rows.clone());
+        let shape = ShapeBand {
+            serial,
+            mode,
+            cols: band.column_range(),
+            rows,
+        };
+        let rows = &shape.rows;
         let [p, q, r] = *o;
         for (k, (p0, p1)) in [(0, (p, q)), (1, (q, r)), (2, (r, p))] {
             let (ylo, yhi) = (p0.y.min(p1.y) >> FINE_BITS, p0.y.max(p1.y) >> FINE_BITS);
@@ -725,16 +732,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
                 continue;
             }
             let edge = first.wrapping_add(k);
-            cache::walk_edge(
-                cache.as_deref_mut(),
-                serial,
-                edge,
-                (p0, p1),
-                mode,
-                &cols,
-                rows.clone(),
-                &mut out,
-            );
+            cache::walk_edge(cache.as_deref_mut(), &shape, edge, (p0, p1), &mut out);
         }
         buf.compose(rows.start, rows.end, Coverage::Signed(1), paint, op);
     }
@@ -855,12 +853,14 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             match kind {
                 WalkKind::Box(mode) => cache::walk_edge(
                     cache.as_deref_mut(),
-                    serial,
+                    &ShapeBand {
+                        serial,
+                        mode,
+                        cols: cols.clone(),
+                        rows: rows.clone(),
+                    },
                     k,
                     (p0, p1),
-                    mode,
-                    &cols,
-                    rows.clone(),
                     &mut buf.deltas(rows.clone()),
                 ),
                 WalkKind::Aliased => {
