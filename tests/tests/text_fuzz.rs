@@ -208,3 +208,45 @@ fn a_collection_whose_faces_run_past_the_file_is_malformed() {
     one.extend_from_slice(&[0, 0, 0, 16]);
     assert!(Font::new(&one).is_err());
 }
+
+/// The bundled font with its first `cmap` subtable's header rewritten
+/// as format `format`, whose 32-bit count (at `at` in the subtable) is
+/// `count`.
+fn with_cmap_subtable(format: u16, at: usize, count: u32) -> Vec<u8> {
+    let mut v = FONT.to_vec();
+    let be16 = |v: &[u8], i: usize| usize::from(u16::from_be_bytes([v[i], v[i + 1]]));
+    let be32 =
+        |v: &[u8], i: usize| u32::from_be_bytes([v[i], v[i + 1], v[i + 2], v[i + 3]]) as usize;
+    // The table directory: 12 bytes, then 16 a table (tag, sum, offset, length).
+    let cmap = (0..be16(&v, 4))
+        .map(|k| 12 + 16 * k)
+        .find(|&r| &v[r..r + 4] == b"cmap")
+        .map(|r| be32(&v, r + 8))
+        .expect("the bundled font has a cmap");
+    let sub = cmap + be32(&v, cmap + 4 + 4);
+    v[sub..sub + 2].copy_from_slice(&format.to_be_bytes());
+    v[sub + at..sub + at + 4].copy_from_slice(&count.to_be_bytes());
+    v
+}
+
+/// Found by the `text` fuzz target: a `cmap` subtable of format 13 that
+/// claims 2^28 groups of 12 bytes. ttf-parser checks that array's read
+/// only with a `debug_assert` (a panic in debug builds, such as this
+/// test's) when a character is looked up; `Font::new` refuses the file
+/// first. Formats 10, 12 and 14 have such 32-bit counts too; one that fits
+/// its table is left to the parser.
+#[test]
+fn a_cmap_subtable_whose_entries_run_past_its_table_is_malformed() {
+    for (format, at) in [(10u16, 16usize), (12, 12), (13, 12), (14, 6)] {
+        let file = with_cmap_subtable(format, at, 1 << 28);
+        assert_eq!(
+            Font::new(&file).err(),
+            Some(softedge::text::FontError::Malformed),
+            "format {format}"
+        );
+        let file = with_cmap_subtable(format, at, 1);
+        if let Ok(font) = Font::new(&file) {
+            exercise(&font, "Ag?", 12 * 64, 5000, 15000, 0);
+        }
+    }
+}

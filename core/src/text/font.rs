@@ -114,6 +114,43 @@ fn collection_fits(data: &[u8]) -> bool {
     }
 }
 
+/// False when a `cmap` subtable with a 32-bit count (formats 10, 12, 13
+/// and 14) claims more entries than the table holds: refused before the
+/// parser reads the subtable in `glyph_index` (its array read checks the
+/// length only with a `debug_assert`, so a debug build would panic; found
+/// by the `text` fuzz target: a format 13 subtable of 2^28 groups).
+fn cmap_fits(face: &Face<'_>) -> bool {
+    let Some(cmap) = face.raw_face().table(Tag::from_bytes(b"cmap")) else {
+        return true;
+    };
+    let u16_at = |d: &[u8], i: usize| d.get(i..i + 2).map(|b| u16::from_be_bytes([b[0], b[1]]));
+    let u32_at = |d: &[u8], i: usize| {
+        d.get(i..i + 4)
+            .map(|b| u64::from(u32::from_be_bytes([b[0], b[1], b[2], b[3]])))
+    };
+    let tables = u16_at(cmap, 2).unwrap_or(0);
+    (0..usize::from(tables)).all(|k| {
+        // An encoding record: platform, encoding, offset of the subtable.
+        let Some(sub) = u32_at(cmap, 4 + 8 * k + 4)
+            .and_then(|o| usize::try_from(o).ok())
+            .and_then(|o| cmap.get(o..))
+        else {
+            return true;
+        };
+        // (where the count is, the header's size, an entry's size)
+        let array = match u16_at(sub, 0) {
+            Some(10) => Some((16, 20, 2)),
+            Some(12 | 13) => Some((12, 16, 12)),
+            Some(14) => Some((6, 10, 11)),
+            _ => None,
+        };
+        match array.and_then(|(at, head, size)| Some((u32_at(sub, at)?, head, size))) {
+            Some((count, head, size)) => head + count * size <= sub.len() as u64,
+            None => true,
+        }
+    })
+}
+
 impl<'a> Font<'a> {
     /// Parses the first face of a font file.
     pub fn new(data: &'a [u8]) -> Result<Self, FontError> {
@@ -131,6 +168,9 @@ impl<'a> Font<'a> {
             E::FaceIndexOutOfBounds => FontError::FaceIndex,
             _ => FontError::Malformed,
         })?;
+        if !cmap_fits(&face) {
+            return Err(FontError::Malformed);
+        }
         let upem = face.units_per_em();
         if !UNITS_PER_EM.contains(&upem) {
             return Err(FontError::UnitsPerEm(upem));
