@@ -845,20 +845,25 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
                 .saturating_mul(1 << FINE_BITS)
                 .saturating_sub(1),
         );
+        // What the exact-area walks of every segment share, made once.
+        let shape = ShapeBand {
+            serial,
+            mode: match kind {
+                WalkKind::Box(mode) => mode,
+                _ => AreaMode::Exact,
+            },
+            cols: cols.clone(),
+            rows: rows.clone(),
+        };
         let mut edges = Numbered::new(first, window, |k, p0: FinePoint, p1: FinePoint| {
             let (ylo, yhi) = (p0.y.min(p1.y) >> FINE_BITS, p0.y.max(p1.y) >> FINE_BITS);
             if yhi + margin < rows.start || ylo - margin >= rows.end {
                 return;
             }
             match kind {
-                WalkKind::Box(mode) => cache::walk_edge(
+                WalkKind::Box(_) => cache::walk_edge(
                     cache.as_deref_mut(),
-                    &ShapeBand {
-                        serial,
-                        mode,
-                        cols: cols.clone(),
-                        rows: rows.clone(),
-                    },
+                    &shape,
                     k,
                     (p0, p1),
                     &mut buf.deltas(rows.clone()),
