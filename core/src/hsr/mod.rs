@@ -78,7 +78,13 @@
 //! visible is exact in front-to-back order (measured on random flat
 //! polygons at constant depths, `tests/tests/hsr_exact.rs`: worst 4.2
 //! levels of 4095 over 400 scenes, the engine's edge rounding; it was 898
-//! before the sample masks).
+//! before the sample masks). One rounding more: the depth buffer keeps a
+//! pixel's claimed coverage in 1/32768 px, so each partly covering
+//! fragment's share is truncated to that unit, and as the accumulator
+//! holds what surfaces add to the band's clear value, each such fragment
+//! may leave up to 1/32768 of its contrast to the clear value showing (at
+//! most 0.125 levels of 4095 per fragment; a CI run found a pixel with
+//! three, 0.061 levels over the exact value, which tipped its rounding).
 //!
 //! Not exact, with the error bounded by one pixel's value along the curves
 //! where it happens: (a) two partly covering fragments overlapping inside
