@@ -42,8 +42,10 @@ use crate::style::{Blend, Opacity};
 /// (60 for three channels, 48 for one, on thumbv6m and x86-64).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ListedTriangle<const C: usize> {
-    /// The vertices as given (a Gouraud plane is fitted from them).
-    v: [FinePoint; 3],
+    /// The vertices in the order whose winding integral is the coverage
+    /// (as given, or `v[0], v[2], v[1]` when `flip`): a band walks them
+    /// in place.
+    o: [FinePoint; 3],
     colors: [[u16; C]; 3],
     /// The first and last pixel rows, then columns, of the box around
     /// the vertices (the coordinate range, ±2048 px, fits 16 bits).
@@ -54,7 +56,8 @@ pub struct ListedTriangle<const C: usize> {
     /// At most the first row of every entry from this one on (a suffix
     /// minimum, or lower), where the list's `from_valid` says it holds.
     from: i16,
-    /// True when the vertices' coverage order is `v[0], v[2], v[1]`.
+    /// True when the coverage order is `v[0], v[2], v[1]` of the
+    /// vertices `v` as given (the Gouraud plane is fitted from those).
     flip: bool,
     /// True for one colour, then `colors[0]` clamped to 12 bits.
     flat: bool,
@@ -64,7 +67,7 @@ pub struct ListedTriangle<const C: usize> {
 impl<const C: usize> ListedTriangle<C> {
     /// An unused entry.
     pub const EMPTY: Self = Self {
-        v: [FinePoint::new(0, 0); 3],
+        o: [FinePoint::new(0, 0); 3],
         colors: [[0; C]; 3],
         rows: [0; 2],
         cols: [0; 2],
@@ -150,14 +153,15 @@ impl<'a, const C: usize> TriangleList<'a, C> {
         let px = |c: i32| (c >> FINE_BITS) as i16;
         let rows = [px(b.y0), px(b.y1)];
         let flat = flat_color(&colors);
+        let o = orient(v);
         *entry = ListedTriangle {
-            v,
+            o,
             colors: flat.map_or(colors, |c| [c; 3]),
             rows,
             cols: [px(b.x0), px(b.x1)],
             until: done.last().map_or(rows[1], |t| t.until.max(rows[1])),
             from: rows[0],
-            flip: orient(v) != v,
+            flip: o != v,
             flat: flat.is_some(),
             op: op_of(blend, opacity),
         };
@@ -241,14 +245,14 @@ impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
             if i32::from(t.cols[1]) < reach.x_lo || i32::from(t.cols[0]) >= reach.x_hi {
                 continue;
             }
-            let [p, q, r] = t.v;
-            let oriented = if t.flip { [p, r, q] } else { t.v };
             let serial = base.wrapping_add(i as u32);
             if t.flat {
                 let paint = Paint::Flat(t.colors[0]);
-                self.fill_oriented(serial, 0, &oriented, rows, &paint, t.op);
+                self.fill_oriented_here(serial, 0, &t.o, rows, &paint, t.op);
             } else {
-                self.gouraud(serial, 0, &t.v, &oriented, rows, &t.colors, t.op);
+                let [p, q, r] = t.o;
+                let v = if t.flip { [p, r, q] } else { t.o };
+                self.gouraud(serial, 0, &v, &t.o, rows, &t.colors, t.op);
             }
         }
     }

@@ -700,6 +700,21 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         serial: u32,
         first: u32,
         o: &[FinePoint; 3],
+        rows: [i32; 2],
+        paint: &Paint<'_, C>,
+        op: ComposeOp,
+    ) {
+        self.fill_oriented_here(serial, first, o, rows, paint, op);
+    }
+
+    /// [`fill_oriented`](Self::fill_oriented), inlined into a caller that
+    /// draws many triangles (a list's flat ones).
+    #[inline(always)]
+    pub(super) fn fill_oriented_here(
+        &mut self,
+        serial: u32,
+        first: u32,
+        o: &[FinePoint; 3],
         [y_first, y_last]: [i32; 2],
         paint: &Paint<'_, C>,
         op: ComposeOp,
