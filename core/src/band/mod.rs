@@ -604,6 +604,45 @@ impl BandDeltas<'_> {
 }
 
 impl crate::edge::DeltaSink for BandDeltas<'_> {
+    /// One bounds test for the run of rows, then two additions and the
+    /// extent per row (the general `put_n` finds each row's start by a
+    /// multiply and tests it).
+    #[inline]
+    fn put_rows(&mut self, x: i32, ys: core::ops::Range<i32>, d0: i32, d1: i32) {
+        let ya = ys.start.max(self.y_first);
+        let yb = ys.end.min(self.y_first.saturating_add(self.n as i32));
+        if ya >= yb {
+            return;
+        }
+        // A difference past `i32` wraps to one that fails the test.
+        let c = x.wrapping_sub(self.x0);
+        if c < 0 || c >= self.w - 1 {
+            // Clipped at the band's sides: change by change.
+            for y in ya..yb {
+                self.put_n(x, y, 1, [d0, d1]);
+            }
+            return;
+        }
+        let (w, c) = (self.w as usize, c as usize);
+        let stride = w + ROW_EXTRA;
+        let mut start = row_start(self.r_first + (ya - self.y_first) as usize, w);
+        let mut left = yb - ya;
+        while left > 0 {
+            if let Some(row) = self.cover.get_mut(start..start + ROW_HEAD + c + 2) {
+                if let Some([l, h]) = row.get_mut(LO..HI + 1) {
+                    *l = (*l).min(c as i32);
+                    *h = (*h).max(c as i32 + 1);
+                }
+                if let Some([e0, e1]) = row.get_mut(ROW_HEAD + c..) {
+                    *e0 = e0.wrapping_add(d0);
+                    *e1 = e1.wrapping_add(d1);
+                }
+            }
+            start += stride;
+            left -= 1;
+        }
+    }
+
     #[inline]
     fn put(&mut self, x: i32, y: i32, d: i32) {
         let Some(start) = self.row(y) else {
@@ -870,5 +909,52 @@ mod tests {
         assert_eq!(b.lin12(99, 3), None);
         assert_eq!(b.lin12(103, 3), Some([7]));
         assert_eq!(b.lin12(104, 3), None);
+    }
+
+    /// The scratch after `f` wrote a band's deltas for rows `rows`.
+    fn scratch_after<F: FnOnce(&mut BandDeltas<'_>)>(
+        band: Band,
+        rows: core::ops::Range<i32>,
+        f: F,
+    ) -> [i32; 64] {
+        let mut acc = [0i32; 48];
+        let mut cov = [0i32; 64];
+        let mut b = BandBuffer::<1>::new(&mut acc, &mut cov, band).unwrap();
+        f(&mut b.deltas(rows));
+        cov
+    }
+
+    #[test]
+    fn put_rows_is_put_n_in_each_row() {
+        use crate::edge::DeltaSink;
+        // Bands of 6 columns and 4 rows, at frame column 0 and windowed
+        // (x0 = 10); pairs inside, at each side and off both sides; row
+        // runs inside, across both ends and outside; the walk's rows a
+        // subset of the band's.
+        for x0 in [0, 10] {
+            let band = Band {
+                width: 6,
+                y0: 20,
+                rows: 4,
+                x0,
+            };
+            for walk in [18..26, 21..23, 20..21] {
+                for x in x0 - 3..x0 + 9 {
+                    for ya in 17..26 {
+                        for yb in ya..27 {
+                            let bulk = scratch_after(band, walk.clone(), |d| {
+                                d.put_rows(x, ya..yb, 5, -7);
+                            });
+                            let each = scratch_after(band, walk.clone(), |d| {
+                                for y in ya..yb {
+                                    d.put_n(x, y, 1, [5, -7]);
+                                }
+                            });
+                            assert_eq!(bulk, each, "x0 {x0}, walk {walk:?}, x {x}, {ya}..{yb}");
+                        }
+                    }
+                }
+            }
+        }
     }
 }

@@ -157,6 +157,15 @@ impl<const C: usize> BandBuffer<'_, C> {
         }
     }
 
+    /// [`compose`](Self::compose) of an opaque flat colour over, with the
+    /// orientation-signed coverage of a simple outline (`Coverage::Signed(1)`):
+    /// what most triangles of most bands are, without the choice of sweep.
+    #[inline(never)] // kept out of line so profiles can name it
+    pub(crate) fn compose_opaque_flat(&mut self, y_lo: i32, y_hi: i32, color: &[u16; C]) {
+        let f = color.map(|v| i32::from(v) << COVER_BITS);
+        self.sweep_over_flat(y_lo, y_hi, &f, true);
+    }
+
     /// The sweep of rows `y_lo..y_hi`: per row, the running sum of the
     /// scratch's changes (clearing them) gives each pixel its coverage,
     /// constant between changes ([`sweep_row`]). `convex`: the share is

@@ -383,6 +383,12 @@ pub(crate) fn walk_edge<const C: usize>(
         ref rows,
     } = *shape;
     let rows = rows.clone();
+    if mode == AreaMode::Exact && p0.x == p1.x && p0.y != p1.y {
+        // A vertical edge needs no set-up and no state: walked row by
+        // row, never kept.
+        crate::edge::walk_vertical(p0, p1, rows, out);
+        return;
+    }
     let tag = mode as i32;
     let mut cache = cache;
     if let Some(w) = cache

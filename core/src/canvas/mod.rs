@@ -746,10 +746,20 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             if yhi < rows.start || ylo >= rows.end {
                 continue;
             }
+            if p0.x == p1.x && mode == AreaMode::Exact {
+                // Vertical (`walk_edge` would say so too, after its call).
+                crate::edge::walk_vertical(p0, p1, rows.clone(), &mut out);
+                continue;
+            }
             let edge = first.wrapping_add(k);
             cache::walk_edge(cache.as_deref_mut(), &shape, edge, (p0, p1), &mut out);
         }
-        buf.compose(rows.start, rows.end, Coverage::Signed(1), paint, op);
+        match (paint, op) {
+            (Paint::Flat(color), ComposeOp::Over(a)) if a.is_opaque() => {
+                buf.compose_opaque_flat(rows.start, rows.end, color);
+            }
+            _ => buf.compose(rows.start, rows.end, Coverage::Signed(1), paint, op),
+        }
     }
 
     /// The Gouraud plane of a triangle: fitted once per frame when cached.

@@ -76,10 +76,12 @@ mod aliased;
 mod area;
 mod canon;
 mod crossing;
+mod vertical;
 mod walk;
 
 pub use aliased::AliasedWalk;
 pub(crate) use canon::Canon;
+pub(crate) use vertical::walk as walk_vertical;
 pub use walk::EdgeWalk;
 
 /// Which box-coverage formula the walker uses for edge pixels.
@@ -131,6 +133,16 @@ pub(crate) trait DeltaSink {
         for v in d {
             self.put(x, y, v);
             x += step;
+        }
+    }
+
+    /// The same two changes, `d0` at `x` and `d1` at `x + 1`, in each of
+    /// rows `ys` (a vertical edge's whole rows): `put_n(x, y, 1, [d0, d1])`
+    /// for each `y`.
+    #[inline]
+    fn put_rows(&mut self, x: i32, ys: core::ops::Range<i32>, d0: i32, d1: i32) {
+        for y in ys {
+            self.put_n(x, y, 1, [d0, d1]);
         }
     }
 
