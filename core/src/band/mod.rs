@@ -617,9 +617,12 @@ impl crate::edge::DeltaSink for BandDeltas<'_> {
         // A difference past `i32` wraps to one that fails the test.
         let c = x.wrapping_sub(self.x0);
         if c < 0 || c >= self.w - 1 {
-            // Clipped at the band's sides: change by change.
+            // Clipped at the band's sides: change by change (`put`, not
+            // `put_n`, which a third caller would have the compiler keep
+            // out of line for the walks too).
             for y in ya..yb {
-                self.put_n(x, y, 1, [d0, d1]);
+                self.put(x, y, d0);
+                self.put(x.saturating_add(1), y, d1);
             }
             return;
         }

@@ -997,7 +997,9 @@ impl EdgeWalk {
                 None => out.put_n(mpos(bc), a, step_x, [w * (ONE - s.s), w * s.s]),
             }
         }
-        (r.row, r.a, r.prev, r.st) = (hi, hi, 0, st);
+        // (`row` and `prev` are the x-major walk's; a y-major one keys on
+        // `a` alone.)
+        (r.a, r.st) = (hi, st);
     }
 }
 
