@@ -5,7 +5,9 @@
 # 240x240 frame (no triangles: clear, resolve, gamma, pack, flush), the
 # marginal instructions per pixel of triangle area for each size class,
 #     (insns(N = 2000) - insns(N = 1)) / (summed area of triangles 2..2000),
-# and the 132-triangle screen; then the screen at band heights 16..1.
+# and the 132-triangle screen; then the screen at band heights 16..1, and
+# (AA flat RGB, direct and listed) the screen with slanted cells in 16-
+# and 3-row bands.
 # Then (issue 16) a filled circle, a stroked arc gauge and a line chart (stroked
 # in every band, or recorded once per frame into a SegmentBuffer) alone on the
 # frame, softedge (AaStyle) against embedded-graphics (PrimitiveStyle):
@@ -89,6 +91,7 @@ $1 == "insns" {
     if (!(r in seen)) { seen[r] = 1; order[++nr] = r }
     if (w == "empty") fixed[r] = $6
     else if (w == "screen") { screen[r, rows] = $6; if (rows == 16 || rows == 240) screen16[r] = $6 }
+    else if (w == "slanted") slanted[r, rows] = $6
     else if (n == 1) one[r, w] = $6
     else all[r, w] = $6
 }
@@ -131,6 +134,13 @@ END {
         printf "| %s ", (r in label ? label[r] : r)
         for (k = 1; k <= 7; k++) printf "| %s ", mega(screen[r, bh[k]])
         printf "| %.3fx |\n", screen[r, 3] / screen[r, 16]
+    }
+    printf "\nThe same screen with its cells slanted (the bottom corners of each cell 7 px right of its top ones: no vertical edge; softedge walks vertical edges without set-up or state, so this shows what that path gives the screen):\n\n"
+    printf "| renderer | 16 | 3 | 3 rows / 16 rows |\n| --- | ---: | ---: | ---: |\n"
+    for (i = 1; i <= nr; i++) {
+        r = order[i]
+        if (!((r, 16) in slanted)) continue
+        printf "| %s | %s | %s | %.3fx |\n", (r in label ? label[r] : r), mega(slanted[r, 16]), mega(slanted[r, 3]), slanted[r, 3] / slanted[r, 16]
     }
     printf "\nWhat the walk cache buys: the screen, softedge AA flat RGB, drawn directly and from a `TriangleList`, by walk-cache slots (caller-provided, `WalkSlot::<3>::SIZE` bytes each), "
     printf "and the RAM of the 3-row frame (band buffers, %s bytes, + cache; the list is 60 bytes a triangle more):\n\n", group(b3)

@@ -7,7 +7,7 @@
 #
 # Usage: bash boards/profile-m0.sh <renderer> <workload> [band rows] [--top N]
 #   renderer: aa_rgb aa_gouraud aa_gray aliased_rgb aa_rgb_rows eg_fill eg_stock_fb
-#   workload: small medium large screen empty
+#   workload: small medium large screen slanted empty
 #   e.g. bash boards/profile-m0.sh aa_rgb medium
 #        bash boards/profile-m0.sh aa_rgb screen 16
 # The firmware runs only that frame (all of the workload's triangles; see

@@ -212,8 +212,11 @@ pub const SCREEN_LEN: usize = 2 * SCREEN_COLS as usize * SCREEN_ROWS as usize;
 /// `x_i = round(i * FRAME / 11)` (cells 21 or 22 px wide), row `j` spans
 /// `[40 j, 40 (j + 1)]`; each cell is split along its top-left to
 /// bottom-right diagonal, the upper-right triangle first. Random colours
-/// as for the random workloads.
-const fn screen_triangles(seed: u64) -> [Tri; SCREEN_LEN] {
+/// as for the random workloads. With `slant`, each cell's bottom corners
+/// are `slant` px right of its top ones (parallelograms: no edge is
+/// vertical; the frame's left edge shows a sliver of background, the
+/// right column reaches past the frame).
+const fn screen_triangles(seed: u64, slant: i16) -> [Tri; SCREEN_LEN] {
     let mut rng = Pcg32::new(seed, STREAM);
     let mut out = [Tri::ZERO; SCREEN_LEN];
     let (cols, rows, frame) = (SCREEN_COLS as i32, SCREEN_ROWS as i32, FRAME as i32);
@@ -225,12 +228,13 @@ const fn screen_triangles(seed: u64) -> [Tri; SCREEN_LEN] {
         while i < cols {
             let x0 = ((2 * i * frame + cols) / (2 * cols)) as i16;
             let x1 = ((2 * (i + 1) * frame + cols) / (2 * cols)) as i16;
+            let (b0, b1) = (x0 + slant, x1 + slant);
             out[k] = Tri {
-                v: [[x0, y0], [x1, y0], [x1, y1]],
+                v: [[x0, y0], [x1, y0], [b1, y1]],
                 rgb: random_colors(&mut rng),
             };
             out[k + 1] = Tri {
-                v: [[x0, y0], [x1, y1], [x0, y1]],
+                v: [[x0, y0], [b1, y1], [b0, y1]],
                 rgb: random_colors(&mut rng),
             };
             k += 2;
@@ -244,7 +248,12 @@ const fn screen_triangles(seed: u64) -> [Tri; SCREEN_LEN] {
 static SMALL_TRIS: [Tri; COUNT] = random_triangles(27, SIDE_SMALL);
 static MEDIUM_TRIS: [Tri; COUNT] = random_triangles(437, SIDE_MEDIUM);
 static LARGE_TRIS: [Tri; COUNT] = random_triangles(3900, SIDE_LARGE);
-static SCREEN_TRIS: [Tri; SCREEN_LEN] = screen_triangles(132);
+static SCREEN_TRIS: [Tri; SCREEN_LEN] = screen_triangles(132, 0);
+static SLANTED_TRIS: [Tri; SCREEN_LEN] = screen_triangles(132, SLANT);
+
+/// How far right [`SLANTED`]'s cells' bottom corners are of their top
+/// ones, px (over 40 px).
+pub const SLANT: i16 = 7;
 
 /// [`COUNT`] random triangles of mean area about 27 px².
 pub static SMALL: Workload = Workload {
@@ -265,6 +274,15 @@ pub static LARGE: Workload = Workload {
 pub static SCREEN: Workload = Workload {
     name: "screen",
     tris: &SCREEN_TRIS,
+};
+
+/// [`SCREEN`] with its cells slanted ([`SLANT`] px right over each row
+/// of cells, the same colours): the same structure without vertical
+/// edges, which `softedge` walks without set-up or state (measured
+/// beside the screen, so that what that path gives the screen shows).
+pub static SLANTED: Workload = Workload {
+    name: "slanted",
+    tris: &SLANTED_TRIS,
 };
 
 /// The three random workloads, small to large.
@@ -360,6 +378,33 @@ mod tests {
         for t in SCREEN.tris {
             let a = f64::from(t.twice_area()) / 2.0;
             assert!((420.0..=440.0).contains(&a), "{a}");
+        }
+    }
+
+    #[test]
+    fn slanted_screen_is_the_screen_sheared_without_vertical_edges() {
+        assert_eq!(SLANTED.tris.len(), SCREEN.tris.len());
+        // A shear keeps every area; the colours are the screen's.
+        assert_eq!(SLANTED.twice_area(), SCREEN.twice_area());
+        for (s, t) in SLANTED.tris.iter().zip(SCREEN.tris) {
+            assert_eq!(s.rgb, t.rgb);
+            assert_eq!(s.twice_area(), t.twice_area());
+            for k in 0..3 {
+                let (p, q) = (s.v[k], s.v[(k + 1) % 3]);
+                assert!(p[0] != q[0] || p[1] == q[1], "vertical edge {p:?} {q:?}");
+            }
+        }
+        // Still a mesh: no pixel centre in two triangles.
+        let frame = i32::from(FRAME);
+        for y in 0..frame {
+            for x in 0..frame {
+                let n = SLANTED
+                    .tris
+                    .iter()
+                    .filter(|t| centre_inside(t, x, y))
+                    .count();
+                assert!(n <= 1, "pixel ({x}, {y})");
+            }
         }
     }
 }

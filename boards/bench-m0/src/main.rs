@@ -58,7 +58,7 @@ use softedge_workloads::render::softedge_side::{
 };
 use softedge_workloads::render::targets::{Framebuffer, SpiCounter, FB_LEN};
 use softedge_workloads::render::ui;
-use softedge_workloads::{Tri, Workload, CLASSES, COUNT, SCREEN};
+use softedge_workloads::{Tri, Workload, CLASSES, COUNT, SCREEN, SLANTED};
 
 /// Band heights of the screen sweep (16 is also every other run's).
 const SCREEN_BANDS: [u16; 7] = [16, 8, 6, 4, 3, 2, 1];
@@ -100,7 +100,7 @@ fn main() -> ! {
         .text("/")
         .dec(den)
         .print();
-    for w in CLASSES.iter().copied().chain([&SCREEN]) {
+    for w in CLASSES.iter().copied().chain([&SCREEN, &SLANTED]) {
         Line::new()
             .text("workload ")
             .text(w.name)
@@ -150,6 +150,15 @@ fn main() -> ! {
         }
         for rows in SCREEN_BANDS {
             run(&SCREEN, SCREEN.tris, rows);
+        }
+        if matches!(
+            r,
+            softedge_side::Renderer::AaFlatRgb | softedge_side::Renderer::AaFlatRgbListed
+        ) {
+            // The screen without vertical edges, in 16- and 3-row bands.
+            for rows in [BAND_ROWS, 3] {
+                run(&SLANTED, SLANTED.tris, rows);
+            }
         }
     }
 
