@@ -64,6 +64,10 @@
 //! points, at most two pixels each) are computed directly from the exact
 //! area, once per edge.
 //!
+//! A vertical edge (`vertical.rs`) cuts every row at the same place: in
+//! the exact mode it is walked row by row from its end points, with no
+//! set-up and no state kept between bands (the same changes as the walk).
+//!
 //! ## Ranges
 //!
 //! Fine coordinates lie within `±2^21` ([`geom`](crate::geom)), so
