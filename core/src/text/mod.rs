@@ -58,7 +58,7 @@
 //!
 //! ## Bounded memory and work
 //!
-//! No heap. A [`Font`] is the parser's table directory on the stack (896
+//! No heap. A [`Font`] is the parser's table directory on the stack (908
 //! bytes on thumbv6m); drawing a glyph parses its outline in place (at most 32 levels
 //! of composite glyphs, CFF's 48-operand stack) and flattens it with the
 //! fixed-size [`Flattener`](crate::path::Flattener); nothing else is
