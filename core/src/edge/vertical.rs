@@ -28,12 +28,13 @@ use crate::{COVER_BITS, COVER_ONE};
 const AREA_SHIFT: u32 = 2 * FINE_BITS - COVER_BITS;
 
 /// The changes of the vertical edge `p0 -> p1` (`p0.x == p1.x`,
-/// `p0.y != p1.y`, fine coordinates in range) in frame rows `rows`, into
+/// `p0.y != p1.y`: the callers test both; fine coordinates in range) in
+/// frame rows `rows`, into
 /// `out`: the same calls, with the same values, as the exact-mode
-/// [`EdgeWalk`](super::EdgeWalk) of the edge makes (interior rows one
-/// `put_n` of two changes; the first and last rows a cover change and,
-/// where the line is not on a pixel boundary, the two changes of the
-/// cell's area).
+/// [`EdgeWalk`](super::EdgeWalk) of the edge makes (interior rows a
+/// `put_n` of two changes each, as one `put_rows`; the first and last rows
+/// a cover change and, where the line is not on a pixel boundary, the two
+/// changes of the cell's area).
 pub(crate) fn walk<S: DeltaSink>(p0: FinePoint, p1: FinePoint, rows: Range<i32>, out: &mut S) {
     let (y0, y1, w) = if p0.y < p1.y {
         (p0.y, p1.y, 1)
