@@ -746,8 +746,9 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             if yhi < rows.start || ylo >= rows.end {
                 continue;
             }
-            if p0.x == p1.x && mode == AreaMode::Exact && p0.y != p1.y {
-                // Vertical (`walk_edge` would say so too, after its call).
+            if p0.x == p1.x && mode == AreaMode::Exact {
+                // Vertical (`walk_edge` would say so too, after its call;
+                // a point gives nothing there either).
                 crate::edge::walk_vertical(p0, p1, rows.clone(), &mut out);
                 continue;
             }

@@ -27,9 +27,8 @@ use crate::{COVER_BITS, COVER_ONE};
 /// Shift from fine units² to coverage units: `2 FINE_BITS - COVER_BITS`.
 const AREA_SHIFT: u32 = 2 * FINE_BITS - COVER_BITS;
 
-/// The changes of the vertical edge `p0 -> p1` (`p0.x == p1.x`,
-/// `p0.y != p1.y`: the callers test both; fine coordinates in range) in
-/// frame rows `rows`, into
+/// The changes of the vertical edge `p0 -> p1` (`p0.x == p1.x`, fine
+/// coordinates in range; none for a point) in frame rows `rows`, into
 /// `out`: the same calls, with the same values, as the exact-mode
 /// [`EdgeWalk`](super::EdgeWalk) of the edge makes (interior rows a
 /// `put_n` of two changes each, as one `put_rows`; the first and last rows
@@ -82,8 +81,13 @@ impl Ends {
     #[inline(always)]
     fn row<S: DeltaSink>(&self, out: &mut S, a: i32) {
         let Self { y0, y1, b, fx, w } = *self;
-        // The edge's height in the row: 0 < h <= N.
+        // The edge's height in the row: 0 < h <= N, or 0 for a point
+        // (`p0 == p1`), which gives nothing (as `Canon::new` says of a
+        // horizontal edge).
         let h = (a * N + N).min(y1) - (a * N).max(y0);
+        if h <= 0 {
+            return;
+        }
         // h fx < 2^20: the area's floor in coverage units.
         let s = (h * fx) >> AREA_SHIFT;
         if s != 0 {
@@ -184,6 +188,14 @@ mod tests {
             }
         }
         assert!(checked > 50_000);
+    }
+
+    #[test]
+    fn a_point_gives_no_changes() {
+        for (x, y) in [(0, 0), (1000, 1500), (-77, 512), (5, -1)] {
+            let p = FinePoint::new(x, y);
+            assert_eq!(fast(p, p, -4..4), Vec::new());
+        }
     }
 
     #[test]
