@@ -360,6 +360,11 @@ mod tests {
         s.iter().all(|&v| v > 0) || s.iter().all(|&v| v < 0)
     }
 
+    /// How many of `w`'s triangles hold pixel `(x, y)`'s centre.
+    fn centre_hits(w: &Workload, x: i32, y: i32) -> usize {
+        w.tris.iter().filter(|t| centre_inside(t, x, y)).count()
+    }
+
     #[test]
     fn screen_covers_every_pixel_centre_exactly_once() {
         assert_eq!(SCREEN.tris.len(), 132);
@@ -367,12 +372,7 @@ mod tests {
         assert_eq!(SCREEN.twice_area(), 2 * (frame * frame) as u64);
         for y in 0..frame {
             for x in 0..frame {
-                let n = SCREEN
-                    .tris
-                    .iter()
-                    .filter(|t| centre_inside(t, x, y))
-                    .count();
-                assert_eq!(n, 1, "pixel ({x}, {y})");
+                assert_eq!(centre_hits(&SCREEN, x, y), 1, "pixel ({x}, {y})");
             }
         }
         for t in SCREEN.tris {
@@ -398,12 +398,7 @@ mod tests {
         let frame = i32::from(FRAME);
         for y in 0..frame {
             for x in 0..frame {
-                let n = SLANTED
-                    .tris
-                    .iter()
-                    .filter(|t| centre_inside(t, x, y))
-                    .count();
-                assert!(n <= 1, "pixel ({x}, {y})");
+                assert!(centre_hits(&SLANTED, x, y) <= 1, "pixel ({x}, {y})");
             }
         }
     }
