@@ -13,7 +13,8 @@
 # frame, softedge (AaStyle) against embedded-graphics (PrimitiveStyle):
 # the frame's instructions and the shape's marginal cost (frame with the
 # shape - the same renderer's frame without it); and (issue 15) a dial
-# scene rendered whole and in a 20x20 dirty rectangle, with the bytes an
+# scene rendered whole and in a 20x20 dirty rectangle (directly, and with
+# its curved shapes recorded once per frame), with the bytes an
 # ST7789 would be sent over SPI:
 #     pixels * 2 + windows * (3 command + 8 parameter bytes)
 # (CASET, RASET, RAMWR per window; softedge sends a window per band).
@@ -201,6 +202,8 @@ END {
             group(shape[r, "chart_recorded"] - shape[r, "none"]), group(shape[r, "chart_recorded"])
     }
     rlabel["aa_rgb"] = "softedge AA, `render` / `render_window`, 16-row bands"
+    rlabel["aa_rgb_recorded"] = "softedge AA, the same, the arcs and the disc recorded in the frame (26 112 B of segments)"
+    rlabel["aa_rgb_prerecorded"] = "softedge AA, the same, the arcs and the disc recorded before the frame"
     rlabel["eg_fill"] = "e-g aliased, framebuffer; window: the shapes meeting it, `clipped`"
     printf "\nPartial redraw (issue 15): the dial scene (9 shapes) whole, and only its 20x20 dirty rectangle at (110, 110); "
     printf "SPI bytes = pixels x 2 + windows x 11 (CASET + RASET + RAMWR, 3 command + 8 parameter bytes):\n\n"

@@ -50,6 +50,7 @@ use cortex_m_rt::{entry, exception};
 use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 use embedded_graphics::prelude::*;
 use softedge::canvas::{ListedTriangle, WalkSlot};
+use softedge::path::Segment;
 use softedge::BandBuffer;
 use softedge_board_common::{self as fw, insns::Counter, Line};
 use softedge_workloads::render::eg_side;
@@ -287,6 +288,50 @@ fn main() -> ! {
             || ui::softedge_scene_stream(window, &mut bufs).is_ok(),
             counted,
         );
+        // The same scene with its curved shapes recorded once per frame
+        // (`ui::softedge_scene_recorded`), and recorded before the frame
+        // (`ui::softedge_scene_from`: they do not change): the same
+        // pixels, tested.
+        let mut spi = SpiCounter::new(side, side);
+        let counted = ui::softedge_scene_recorded(window, &mut bufs, &mut spi)
+            .ok()
+            .map(|()| spi);
+        bench.redraw(
+            "aa_rgb_recorded",
+            what,
+            ui::BAND_ROWS,
+            || {
+                ui::scene_stream(&mut bufs, |b, sink| {
+                    ui::softedge_scene_recorded(window, b, sink)
+                })
+                .is_ok()
+            },
+            counted,
+        );
+        let mut store = [Segment::default(); ui::SCENE_STORE];
+        if let Ok(rec) = ui::RecordedCurves::record(&mut store) {
+            let mut spi = SpiCounter::new(side, side);
+            let counted = ui::softedge_scene_from(&rec, window, &mut bufs, &mut spi)
+                .ok()
+                .map(|()| spi);
+            bench.redraw(
+                "aa_rgb_prerecorded",
+                what,
+                ui::BAND_ROWS,
+                || {
+                    ui::scene_stream(&mut bufs, |b, sink| {
+                        ui::softedge_scene_from(&rec, window, b, sink)
+                    })
+                    .is_ok()
+                },
+                counted,
+            );
+        } else {
+            bench.ok = false;
+            Line::new()
+                .text("error the dial scene's curves do not fit their store")
+                .print();
+        }
         let mut spi = SpiCounter::new(side, side);
         let area = window.unwrap_or(spi.bounding_box());
         // The framebuffer's flush: one window, its pixels in order.

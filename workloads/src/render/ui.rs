@@ -14,6 +14,9 @@
 //!   read-out's 20x20 pixels): softedge with `Renderer::render_window`,
 //!   embedded-graphics by clearing the rectangle in its framebuffer and
 //!   redrawing, clipped to it, the shapes whose bounding box meets it.
+//!   [`softedge_scene_recorded`] / [`softedge_scene_from`]: the same
+//!   scene with its curved shapes recorded into `SegmentBuffer`s in the
+//!   frame, or before it ([`RecordedCurves`]), the same pixels.
 //!
 //! Both sides draw the very same primitives (embedded-graphics geometry)
 //! in the same colours (Rgb565, which softedge takes as sRGB).
@@ -358,6 +361,136 @@ where
     Ok(())
 }
 
+/// Segments the recorded scene's curved shapes may have: the gauge's
+/// track ring (703 today), the value arc's ring (522) and the disc (248),
+/// with a margin; 16 bytes a segment, 26 112 bytes in all.
+pub const SCENE_SEGMENTS: [usize; 3] = [768, 576, 288];
+/// Segments in all.
+pub const SCENE_STORE: usize = SCENE_SEGMENTS[0] + SCENE_SEGMENTS[1] + SCENE_SEGMENTS[2];
+
+/// The scene's curved shapes (the gauge's track and value arc, stroked,
+/// and the disc, filled) described once, for every band to fill from.
+pub struct RecordedCurves<'s> {
+    track: SegmentBuffer<'s>,
+    value: SegmentBuffer<'s>,
+    disc: SegmentBuffer<'s>,
+}
+
+/// Segments of the scene's curved shapes, for [`RecordedCurves::record`].
+pub type SceneStore = [Segment; SCENE_STORE];
+
+impl<'s> RecordedCurves<'s> {
+    /// Records the scene's curved shapes into `store`: the segments the
+    /// bands would describe (same geometry, same styles).
+    pub fn record(store: &'s mut SceneStore) -> Result<Self, FrameError> {
+        record_curves(store)
+    }
+}
+
+fn record_curves(store: &mut SceneStore) -> Result<RecordedCurves<'_>, FrameError> {
+    let (track, rest) = store.split_at_mut(SCENE_SEGMENTS[0]);
+    let (value, disc_store) = rest.split_at_mut(SCENE_SEGMENTS[1]);
+    let mut rec = RecordedCurves {
+        track: SegmentBuffer::new(track),
+        value: SegmentBuffer::new(value),
+        disc: SegmentBuffer::new(disc_store),
+    };
+    let stroke = AaStyle::with_stroke(TRACK_COLOR, GAUGE_STROKE).stroke;
+    gauge()
+        .shape()
+        .stroke(&stroke, &mut rec.track)
+        .map_err(|_| FrameError)?;
+    value_arc()
+        .shape()
+        .stroke(&stroke, &mut rec.value)
+        .map_err(|_| FrameError)?;
+    disc().shape().fill(&mut rec.disc);
+    if rec.track.overflowed() || rec.value.overflowed() || rec.disc.overflowed() {
+        return Err(FrameError);
+    }
+    Ok(rec)
+}
+
+/// [`softedge_scene_band`] with the curved shapes filled from `rec`: the
+/// same shapes in the same order, so the same pixels.
+fn recorded_scene_band(
+    c: &mut Canvas<'_, '_, 3, Rgb565>,
+    rec: &RecordedCurves<'_>,
+) -> Result<(), DrawError> {
+    let fill = |c: &mut Canvas<'_, '_, 3, Rgb565>, outline: &SegmentBuffer<'_>, col: Rgb565| {
+        let style = AaStyle::with_fill(col);
+        c.fill(
+            outline,
+            col.into_linear(),
+            FillRule::NonZero,
+            style.blend,
+            style.opacity,
+        )
+    };
+    PANEL.into_styled(AaStyle::with_fill(PANEL_COLOR)).draw(c)?;
+    fill(c, &rec.track, TRACK_COLOR)?;
+    fill(c, &rec.value, GAUGE_COLOR)?;
+    fill(c, &rec.disc, DISC_COLOR)?;
+    for (r, col) in BARS.iter().zip(BAR_COLORS) {
+        r.into_styled(AaStyle::with_fill(col)).draw(c)?;
+    }
+    Ok(())
+}
+
+/// The scene with its curved shapes recorded once per frame (on the
+/// stack, 16 bytes a segment) and filled from the records in every band,
+/// whole or only `window`, into `target`.
+#[inline(never)]
+pub fn softedge_scene_recorded<D>(
+    window: Option<Rectangle>,
+    bufs: &mut Buffers<'_>,
+    target: &mut D,
+) -> Result<(), FrameError>
+where
+    D: DrawTarget<Color = Rgb565> + OriginDimensions,
+{
+    let mut store = [Segment::default(); SCENE_STORE];
+    let rec = RecordedCurves::record(&mut store)?;
+    softedge_scene_from(&rec, window, bufs, target)
+}
+
+/// The scene with its curved shapes filled from `rec`, recorded before
+/// (once at start-up, say: they do not change), whole or only `window`.
+#[inline(never)]
+pub fn softedge_scene_from<D>(
+    rec: &RecordedCurves<'_>,
+    window: Option<Rectangle>,
+    bufs: &mut Buffers<'_>,
+    target: &mut D,
+) -> Result<(), FrameError>
+where
+    D: DrawTarget<Color = Rgb565> + OriginDimensions,
+{
+    let mut r = renderer(&mut *bufs.acc, &mut *bufs.cover, &mut *bufs.slots3)?;
+    let band = |c: &mut Canvas<'_, '_, 3, Rgb565>| recorded_scene_band(c, rec);
+    let report = match window {
+        None => r.render(target, &RGB565, [0; 3], band),
+        Some(w) => r.render_window(target, &RGB565, [0; 3], w, band),
+    }
+    .map_err(|_| FrameError)?;
+    black_box(report);
+    Ok(())
+}
+
+/// `scene` (one of the above) into the one-band DMA buffer `bufs.out16`
+/// (what is measured).
+pub fn scene_stream(
+    bufs: &mut Buffers<'_>,
+    scene: impl FnOnce(&mut Buffers<'_>, &mut BandStream<'_, Rgb565>) -> Result<(), FrameError>,
+) -> Result<(), FrameError> {
+    let out = core::mem::take(&mut bufs.out16);
+    let mut sink = BandStream::new(&mut *out, u32::from(FRAME), u32::from(FRAME));
+    let r = scene(bufs, &mut sink);
+    black_box(sink.pixels());
+    bufs.out16 = out;
+    r
+}
+
 /// Draws the scene with embedded-graphics (aliased) into `target`.
 fn eg_scene_shapes<D: DrawTarget<Color = Rgb565>>(target: &mut D, only: Option<Rectangle>) {
     let meets = |b: Rectangle| only.is_none_or(|d| !d.intersection(&b).is_zero_sized());
@@ -506,6 +639,34 @@ mod tests {
         // the stroker's output grows past it.
         assert!((200..=240).contains(&outline.segments().len()));
         assert!(frames[0].0 == frames[1].0);
+    }
+
+    #[test]
+    fn the_recorded_scene_is_the_scene_bit_for_bit() {
+        let mut s = Storage::new();
+        for window in [None, Some(DIRTY)] {
+            let mut direct = Screen(vec![0x1234; 240 * 240]);
+            softedge_scene(window, &mut s.bufs(), &mut direct).unwrap();
+            let mut recorded = Screen(vec![0x1234; 240 * 240]);
+            softedge_scene_recorded(window, &mut s.bufs(), &mut recorded).unwrap();
+            assert!(direct.0 == recorded.0, "window {window:?}");
+            let mut store = [Segment::default(); SCENE_STORE];
+            let rec = RecordedCurves::record(&mut store).unwrap();
+            for _ in 0..2 {
+                // Once recorded, for any number of frames.
+                let mut again = Screen(vec![0x1234; 240 * 240]);
+                softedge_scene_from(&rec, window, &mut s.bufs(), &mut again).unwrap();
+                assert!(direct.0 == again.0, "window {window:?}");
+            }
+        }
+        let mut store = [Segment::default(); SCENE_STORE];
+        let rec = RecordedCurves::record(&mut store).unwrap();
+        let counts = [&rec.track, &rec.value, &rec.disc].map(|b| b.segments().len());
+        // Each within its store with a margin: this says when the
+        // descriptions grow past it (or shrink, and the stores could).
+        for (n, cap) in counts.into_iter().zip(SCENE_SEGMENTS) {
+            assert!(n <= cap && n * 6 >= cap * 5, "{counts:?}");
+        }
     }
 
     #[test]
