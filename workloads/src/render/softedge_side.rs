@@ -62,7 +62,7 @@ pub enum Renderer {
     AaFlatRgbNoCache,
     /// As [`AaFlatRgb`](Self::AaFlatRgb), the triangles recorded once per
     /// frame (inside the measured frame) into a
-    /// [`TriangleList`](softedge::canvas::TriangleList) that every band
+    /// [`softedge::canvas::TriangleList`] that every band
     /// draws: the drawing closure no longer runs per triangle and band.
     AaFlatRgbListed,
 }
