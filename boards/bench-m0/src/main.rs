@@ -49,7 +49,7 @@ use core::hint::black_box;
 use cortex_m_rt::{entry, exception};
 use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 use embedded_graphics::prelude::*;
-use softedge::canvas::{ListedTriangle, WalkSlot};
+use softedge::canvas::{ListedTriangle, ShapeEntry, WalkSlot};
 use softedge::path::Segment;
 use softedge::BandBuffer;
 use softedge_board_common::{self as fw, insns::Counter, Line};
@@ -88,7 +88,14 @@ fn main() -> ! {
     static mut PANEL_COVER: [i32; panel::COVER_LEN] = [0; panel::COVER_LEN];
     static mut PANEL_OUT: [u16; panel::OUT_LEN] = [0; panel::OUT_LEN];
     static mut PANEL_SLOTS: [WalkSlot<3>; panel::SLOTS] = [WalkSlot::EMPTY; panel::SLOTS];
+    static mut PANEL_SEGMENTS: [Segment; panel::CACHE_SEGMENTS] = [Segment {
+        from: softedge::geom::FinePoint::new(0, 0),
+        to: softedge::geom::FinePoint::new(0, 0),
+    }; panel::CACHE_SEGMENTS];
+    static mut PANEL_ENTRIES: [ShapeEntry; panel::CACHE_ENTRIES] =
+        [ShapeEntry::EMPTY; panel::CACHE_ENTRIES];
     static mut STOCK: eg_side::StockFramebuffer = eg_side::StockFramebuffer::new();
+    static mut SCENE_CACHE: ui::SceneCache = ui::SceneCache::new();
     fw::stack::paint();
     let Some(core) = cortex_m::Peripherals::take() else {
         fw::exit(false)
@@ -120,6 +127,7 @@ fn main() -> ! {
         ran: 0,
         ok: true,
     };
+    let scene_cache: &mut ui::SceneCache = SCENE_CACHE;
     let mut bufs = Buffers {
         acc: ACC,
         cover: COVER,
@@ -239,35 +247,68 @@ fn main() -> ! {
         cover: PANEL_COVER,
         out: PANEL_OUT,
         slots: PANEL_SLOTS,
+        segments: PANEL_SEGMENTS,
+        entries: PANEL_ENTRIES,
+        cached: false,
     };
-    for rows in panel::ROWS {
-        let p0 = panel::Panel::at(0);
-        if let Some((insns, ok)) = bench.measure("panel", "whole", 0, 0, rows, || {
-            panel::frame(&p0, None, rows, &mut pb)
-        }) {
-            bench.panel_line(ok, rows, "whole", insns);
-        }
-        let mut total = 0u64;
-        let mut all_ok = true;
-        let mut ran = false;
-        for f in 1..=panel::PARTIAL_FRAMES {
-            let (before, now) = (panel::Panel::at(f - 1), panel::Panel::at(f));
-            if let Some((insns, ok)) = bench.measure("panel", "partial", 0, 0, rows, || {
-                panel::frame(&now, Some(&before), rows, &mut pb)
+    // Then the same with a shape cache (`Renderer::with_shape_cache`),
+    // after one unmeasured whole frame has filled it: a later frame.
+    for (cached, whole, partial) in [
+        (false, "whole", "partial"),
+        (true, "whole_cached", "partial_cached"),
+    ] {
+        pb.cached = cached;
+        for rows in panel::ROWS {
+            let p0 = panel::Panel::at(0);
+            pb.forget_shapes();
+            if cached {
+                panel::frame(&p0, None, rows, &mut pb);
+            }
+            if let Some((insns, ok)) = bench.measure("panel", whole, 0, 0, rows, || {
+                panel::frame(&p0, None, rows, &mut pb)
             }) {
-                total += insns;
-                all_ok &= ok;
-                ran = true;
+                bench.panel_line(ok, rows, whole, insns);
+            }
+            let mut total = 0u64;
+            let mut all_ok = true;
+            let mut ran = false;
+            for f in 1..=panel::PARTIAL_FRAMES {
+                let (before, now) = (panel::Panel::at(f - 1), panel::Panel::at(f));
+                if let Some((insns, ok)) = bench.measure("panel", partial, 0, 0, rows, || {
+                    panel::frame(&now, Some(&before), rows, &mut pb)
+                }) {
+                    total += insns;
+                    all_ok &= ok;
+                    ran = true;
+                }
+            }
+            if ran {
+                bench.panel_line(
+                    all_ok,
+                    rows,
+                    partial,
+                    total / u64::from(panel::PARTIAL_FRAMES),
+                );
             }
         }
-        if ran {
-            bench.panel_line(
-                all_ok,
-                rows,
-                "partial",
-                total / u64::from(panel::PARTIAL_FRAMES),
-            );
-        }
+    }
+    pb.forget_shapes();
+    pb.cached = true;
+    panel::frame(&panel::Panel::at(0), None, 16, &mut pb);
+    let (entries, segments, direct) = pb.shape_cache_used();
+    Line::new()
+        .text("panel_shape_cache ")
+        .dec(entries as u64)
+        .text(" ")
+        .dec(segments as u64)
+        .text(" ")
+        .dec(direct as u64)
+        .print();
+    if direct > 0 {
+        bench.ok = false;
+        Line::new()
+            .text("error the panel's shapes do not fit the shape cache")
+            .print();
     }
 
     // Partial redraw (issue 15): the dial scene whole and in the dirty
@@ -331,6 +372,42 @@ fn main() -> ! {
             Line::new()
                 .text("error the dial scene's curves do not fit their store")
                 .print();
+        }
+        // The scene through a renderer with a shape cache
+        // (`ui::softedge_scene_cached`): its first frame describes the
+        // shapes into the empty cache, the later ones fill them from it
+        // (measured after one unmeasured full frame).
+        for first in [true, false] {
+            let mut spi = SpiCounter::new(side, side);
+            scene_cache.entries.fill(ShapeEntry::EMPTY);
+            if !first {
+                let mut warm = SpiCounter::new(side, side);
+                let _ = ui::softedge_scene_cached(None, &mut bufs, scene_cache, &mut warm);
+            }
+            let counted = ui::softedge_scene_cached(window, &mut bufs, scene_cache, &mut spi)
+                .ok()
+                .map(|_| spi);
+            scene_cache.entries.fill(ShapeEntry::EMPTY);
+            if !first {
+                let mut warm = SpiCounter::new(side, side);
+                let _ = ui::softedge_scene_cached(None, &mut bufs, scene_cache, &mut warm);
+            }
+            bench.redraw(
+                if first {
+                    "aa_rgb_cache_first"
+                } else {
+                    "aa_rgb_cached"
+                },
+                what,
+                ui::BAND_ROWS,
+                || {
+                    ui::scene_stream(&mut bufs, |b, sink| {
+                        ui::softedge_scene_cached(window, b, scene_cache, sink).map(|_| ())
+                    })
+                    .is_ok()
+                },
+                counted,
+            );
         }
         let mut spi = SpiCounter::new(side, side);
         let area = window.unwrap_or(spi.bounding_box());

@@ -10,6 +10,8 @@
 #[path = "../../rp2040-st7789/src/ui.rs"]
 mod ui;
 
+use softedge::canvas::{ShapeCache, ShapeEntry};
+use softedge::path::Segment;
 use softedge::prelude::*;
 use softedge::render::Renderer;
 use softedge::tone::Curve;
@@ -36,12 +38,35 @@ pub const PARTIAL_FRAMES: u32 = 60;
 
 static TONE: Rgb565Format = Rgb565Format::new(Curve::Srgb);
 
+/// Segments and entries of the shape cache some runs use, as the
+/// firmware has (the panel's outlines hold 2 132 segments in 32 entries:
+/// `shape_cache_used`).
+pub const CACHE_SEGMENTS: usize = 2304;
+pub const CACHE_ENTRIES: usize = 40;
+
 /// What the panel's frames draw into.
 pub struct PanelBuffers<'a> {
     pub acc: &'a mut [i32],
     pub cover: &'a mut [i32],
     pub out: &'a mut [u16],
     pub slots: &'a mut [WalkSlot<3>],
+    /// The shape cache, used when `cached` is set.
+    pub segments: &'a mut [Segment],
+    pub entries: &'a mut [ShapeEntry],
+    pub cached: bool,
+}
+
+impl PanelBuffers<'_> {
+    /// Empties the shape cache.
+    pub fn forget_shapes(&mut self) {
+        self.entries.fill(ShapeEntry::EMPTY);
+    }
+
+    /// The shape cache's outlines kept, segments held, and shapes drawn
+    /// directly for lack of room.
+    pub fn shape_cache_used(&mut self) -> (usize, usize, usize) {
+        ShapeCache::new(self.segments, self.entries, 0).used()
+    }
 }
 
 /// The band buffers' bytes for bands of `rows` (accumulator and cover
@@ -63,6 +88,9 @@ pub fn frame(panel: &Panel, from: Option<&Panel>, rows: u16, b: &mut PanelBuffer
     let Ok(mut r) = Renderer::new(acc, cover, b.slots, W, H, rows) else {
         return false;
     };
+    if b.cached {
+        r = r.with_shape_cache(b.segments, b.entries);
+    }
     let mut sink = BandStream::new(&mut *b.out, u32::from(W), u32::from(H));
     let clean = |rep: Result<FrameReport, _>| matches!(rep, Ok(rep) if rep.skipped.count == 0);
     let ok = match from {

@@ -56,6 +56,9 @@ use hal::fugit::RateExtU32;
 use hal::gpio::FunctionSpi;
 use hal::pac;
 
+use softedge::canvas::ShapeEntry;
+use softedge::geom::FinePoint;
+use softedge::path::Segment;
 use softedge::prelude::*;
 
 use ui::Panel;
@@ -77,11 +80,12 @@ const H: u16 = 240;
 /// Rows per band. Per band, every shape that reaches it is described
 /// again (its curves' vertices computed where they meet the band) and its
 /// edges there set up or resumed, and on the Cortex-M0 that, more than
-/// the pixels, is what a frame costs: this panel costs 27.2 M
-/// instructions a whole frame in 16-row bands and 20.3 M in 40-row ones,
-/// a partial redraw 8.5 M and 6.3 M (`bench-m0`, boards/README.md). 40
-/// rows divide the panel into 6 bands; their buffers take 154 240 bytes,
-/// 58 % of the RP2040's 264 KiB.
+/// the pixels, is what a frame costs: without the shape cache (below)
+/// this panel costs 27.1 M instructions a whole frame in 16-row bands and
+/// 20.2 M in 40-row ones, a partial redraw 8.6 M and 6.3 M; with it 16.4 M
+/// and 14.4 M, 5.7 M and 4.9 M (`bench-m0`, boards/README.md). 40 rows
+/// divide the panel into 6 bands; their buffers take 154 240 bytes, 58 %
+/// of the RP2040's 264 KiB (the shape cache 36 864 more).
 const BAND_ROWS: u16 = 40;
 /// `i32`s of the accumulation buffer: 240 x 40 pixels x 3 channels.
 const ACC_LEN: usize = BandBuffer::<3>::acc_len(W, BAND_ROWS);
@@ -96,6 +100,18 @@ const COVER_LEN: usize = BandBuffer::<3>::cover_len(W, BAND_ROWS);
 /// `WalkSlot::<3>::SIZE` = 368 bytes. Scenes of long edges (large
 /// triangles, Gouraud meshes, whose planes are cached too) gain more.
 const SLOTS: usize = 0;
+
+/// The shape cache (`Renderer::with_shape_cache`): the panel's circles,
+/// ticks, needle and rounded rectangles are described once into it and
+/// filled from it in every later band and frame (the gauge's ring polygons
+/// and the text are drawn directly). Their outlines hold 2 132 segments in
+/// 32 entries (`boards/bench-m0`: `panel_shape_cache`), and each new
+/// needle takes the room of an old one; 16 bytes a segment (36 KiB),
+/// `ShapeEntry::SIZE` (about 100) an entry. On the Cortex-M0 it takes a
+/// whole frame in 40-row bands from 20.24 M to 14.44 M instructions and a
+/// partial redraw from 6.33 M to 4.94 M on average.
+const CACHE_SEGMENTS: usize = 2304;
+const CACHE_ENTRIES: usize = 40;
 
 /// Bytes mipidsi sends to open each window (each band of a rectangle):
 /// CASET and RASET (a command byte and four parameter bytes each) and
@@ -165,6 +181,11 @@ fn main() -> ! {
     // (the entry function runs once).
     static mut ACC: [i32; ACC_LEN] = [0; ACC_LEN];
     static mut COVER: [i32; COVER_LEN] = [0; COVER_LEN];
+    // All zero bits: in .bss too.
+    static mut SEGMENTS: [Segment; CACHE_SEGMENTS] = [Segment {
+        from: FinePoint::new(0, 0),
+        to: FinePoint::new(0, 0),
+    }; CACHE_SEGMENTS];
 
     let Some(mut pac) = pac::Peripherals::take() else {
         defmt::panic!("peripherals taken twice");
@@ -231,8 +252,15 @@ fn main() -> ! {
         4 * (ACC_LEN + COVER_LEN),
         SLOTS * WalkSlot::<3>::SIZE
     );
+    // The shape cache's entries on the stack (`ShapeEntry::EMPTY` is not
+    // all zero bits either).
+    let mut entries = [ShapeEntry::EMPTY; CACHE_ENTRIES];
+    defmt::info!(
+        "shape cache {} bytes",
+        CACHE_SEGMENTS * core::mem::size_of::<Segment>() + CACHE_ENTRIES * ShapeEntry::SIZE
+    );
     let mut renderer = match Renderer::new(ACC, COVER, &mut slots, W, H, BAND_ROWS) {
-        Ok(r) => r,
+        Ok(r) => r.with_shape_cache(SEGMENTS, &mut entries),
         Err(e) => defmt::panic!("band buffers too small: {}", e),
     };
     let whole = Rectangle::new(Point::zero(), Size::new(W.into(), H.into()));

@@ -25,12 +25,14 @@ mod cache;
 mod gradient;
 mod list;
 pub(crate) mod paths;
+mod retained;
 #[cfg(feature = "embedded-graphics")]
 mod target;
 
 use cache::ShapeBand;
 pub use cache::{WalkCache, WalkSlot};
 pub use list::{ListedTriangle, TriangleList};
+pub use retained::{ShapeCache, ShapeEntry};
 
 use core::ops::Range;
 
@@ -182,6 +184,8 @@ pub(super) enum Fill<'g, const C: usize> {
 pub struct Canvas<'c, 'b, const C: usize, Col = [u16; C]> {
     buf: &'c mut BandBuffer<'b, C>,
     cache: Option<WalkCache<'c, C>>,
+    /// Outlines kept from band to band and frame to frame.
+    shapes: Option<ShapeCache<'c>>,
     serial: u32,
     style: RenderStyle,
     skipped: Skipped,
@@ -274,6 +278,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         Self {
             buf,
             cache,
+            shapes: None,
             serial: 0,
             style: RenderStyle::default(),
             skipped: Skipped::default(),
@@ -288,6 +293,22 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
     pub fn with_frame(mut self, width: u16, height: u16) -> Self {
         self.frame = (width, height);
         self
+    }
+
+    /// With a cache of shape outlines: the shapes that have a key
+    /// ([`Shape::key`](crate::path::Shape::key)), filled or stroked without
+    /// dashes, are described once into it and filled from it in this band
+    /// and, given views of the same slices, in every later band and frame
+    /// (see [`ShapeCache`]). The same pixels as without.
+    pub fn with_shapes(mut self, shapes: ShapeCache<'c>) -> Self {
+        self.shapes = Some(shapes);
+        self
+    }
+
+    /// The shape cache's outlines found kept, and outlines described into
+    /// it, in this band.
+    pub fn shape_stats(&self) -> (u32, u32) {
+        self.shapes.as_ref().map_or((0, 0), |c| c.stats())
     }
 
     /// The frame's width and height.
@@ -420,9 +441,33 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
+        let tol = crate::path::Tolerance::DEFAULT;
+        // The cache is taken out (and put back) only for a shape with a key.
+        let key = shape.key().filter(|_| self.shapes.is_some());
+        if let (Some(key), Some(mut shapes)) = (key, key.and_then(|_| self.shapes.take())) {
+            let kept = shapes.outline(
+                retained::OutlineKey::fill(key, tol),
+                || paths::shape_bounds(shape),
+                |buf| {
+                    shape.fill_with(tol, buf);
+                    true
+                },
+            );
+            let r = kept.map(|(segments, bounds)| {
+                let outline = paths::Kept {
+                    segments: shapes.segments(segments),
+                    bounds,
+                };
+                self.fill_with(&outline, fill, rule, blend, opacity)
+            });
+            self.shapes = Some(shapes);
+            if let Some(r) = r {
+                return r;
+            }
+        }
         let outline = paths::Filled {
             shape,
-            tol: crate::path::Tolerance::DEFAULT,
+            tol,
             bounds: paths::shape_bounds(shape),
         };
         self.fill_with(&outline, fill, rule, blend, opacity)
@@ -452,10 +497,35 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         opacity: Opacity,
     ) -> Result<(), DrawError> {
         let serial = self.next_serial();
+        let tol = crate::path::Tolerance::DEFAULT;
+        // The cache is taken out (and put back) only for a stroke with a key.
+        let key = shape
+            .key()
+            .filter(|_| self.shapes.is_some())
+            .and_then(|k| retained::OutlineKey::stroke(k, style, tol));
+        if let (Some(key), Some(mut shapes)) = (key, key.and_then(|_| self.shapes.take())) {
+            let kept = shapes.outline(
+                key,
+                || paths::Stroked::<S>::widen(paths::shape_bounds(shape), style),
+                |buf| shape.stroke_with(style, tol, buf).is_ok(),
+            );
+            let r = kept.map(|(segments, bounds)| {
+                let outline = paths::Kept {
+                    segments: shapes.segments(segments),
+                    bounds,
+                };
+                self.paint_outline(serial, &outline, FillRule::NonZero, fill, blend, opacity)
+                    .inspect_err(|&e| self.skip(serial, e))
+            });
+            self.shapes = Some(shapes);
+            if let Some(r) = r {
+                return r;
+            }
+        }
         let outline = paths::Stroked {
             shape,
             style,
-            tol: crate::path::Tolerance::DEFAULT,
+            tol,
             bounds: paths::Stroked::<S>::widen(paths::shape_bounds(shape), style),
             error: core::cell::Cell::new(None),
         };

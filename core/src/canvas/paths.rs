@@ -21,7 +21,9 @@
 
 use super::{FineRect, Outline};
 use crate::geom::{FinePoint, PathSink, FINE_LIMIT};
-use crate::path::{SegmentBuffer, SegmentSink, Shape, StrokeError, StrokeStyle, Tolerance};
+use crate::path::{
+    Segment, SegmentBuffer, SegmentSink, Shape, StrokeError, StrokeStyle, Tolerance,
+};
 
 /// The box around every point a description names.
 #[derive(Default)]
@@ -195,20 +197,53 @@ impl Outline for SegmentBuffer<'_> {
         }
     }
     fn segments_into<K: SegmentSink>(&self, sink: &mut K) {
-        let Some((lo, hi)) = sink.window() else {
-            return self.replay(sink);
-        };
-        for s in self.segments() {
-            let (a, b) = (s.from.y, s.to.y);
-            if (a < lo && b < lo) || (a > hi && b > hi) {
-                sink.skipped(1);
-            } else {
-                sink.segment(s.from, s.to);
-            }
-        }
+        replay_window(self.segments(), sink);
     }
     fn complete(&self) -> bool {
         !self.overflowed()
+    }
+}
+
+/// `segments` to `sink`, in order; those whose y extent lies wholly
+/// outside the sink's window are counted instead (they keep their
+/// numbers).
+fn replay_window<K: SegmentSink>(segments: &[Segment], sink: &mut K) {
+    let Some((lo, hi)) = sink.window() else {
+        for s in segments {
+            sink.segment(s.from, s.to);
+        }
+        return;
+    };
+    for s in segments {
+        let (a, b) = (s.from.y, s.to.y);
+        if (a < lo && b < lo) || (a > hi && b > hi) {
+            sink.skipped(1);
+        } else {
+            sink.segment(s.from, s.to);
+        }
+    }
+}
+
+/// An outline kept in a [`ShapeCache`](super::ShapeCache): its segments,
+/// filled as a recorded outline is, and the bounds the shape drawn
+/// directly has (so that the bands it is drawn in and the errors it gives
+/// are the same).
+pub(crate) struct Kept<'s> {
+    pub segments: &'s [Segment],
+    pub bounds: Option<FineRect>,
+}
+
+impl Outline for Kept<'_> {
+    fn bounds(&self) -> Option<FineRect> {
+        self.bounds
+    }
+    fn segments<F: FnMut(FinePoint, FinePoint)>(&self, mut f: F) {
+        for s in self.segments {
+            f(s.from, s.to);
+        }
+    }
+    fn segments_into<K: SegmentSink>(&self, sink: &mut K) {
+        replay_window(self.segments, sink);
     }
 }
 

@@ -133,7 +133,7 @@ pub use flattener::Flattener;
 pub use segment::SegmentSink;
 pub use shape::{
     Arc, Circle, CornerRadii, Ellipse, Line, Polygon, Polyline, Rectangle, RoundedRectangle,
-    Sector, Shape,
+    Sector, Shape, ShapeKey,
 };
 pub use stroke::{
     Dash, LineCap, LineJoin, MiterLimit, StrokeAlignment, StrokeError, StrokeStyle, Stroker,

@@ -25,8 +25,9 @@ use embedded_graphics_core::geometry::{OriginDimensions, Point, Size};
 use embedded_graphics_core::primitives::Rectangle;
 
 use crate::band::{BandBuffer, BandError, Bands};
-use crate::canvas::{Canvas, Skipped, WalkCache, WalkSlot};
+use crate::canvas::{Canvas, ShapeCache, ShapeEntry, Skipped, WalkCache, WalkSlot};
 use crate::color::IntoLinear;
+use crate::path::Segment as PathSegment;
 use crate::tone::profile::{Profile, ToneRow};
 
 /// Why a frame was not rendered, or not completely.
@@ -118,6 +119,10 @@ pub struct Renderer<'a, const C: usize> {
     /// The accumulator is known to hold this background (it is reset to it
     /// as each band is sent).
     holds: Option<[u16; C]>,
+    /// The shape cache's segments and entries, kept from frame to frame.
+    shapes: Option<(&'a mut [PathSegment], &'a mut [ShapeEntry])>,
+    /// The last frame's outlines found kept, and described into the cache.
+    shape_stats: (u32, u32),
 }
 
 impl<'a, const C: usize> Renderer<'a, C> {
@@ -157,7 +162,34 @@ impl<'a, const C: usize> Renderer<'a, C> {
             height,
             band_rows: rows,
             holds: None,
+            shapes: None,
+            shape_stats: (0, 0),
         })
+    }
+
+    /// With a cache of shape outlines over `segments` (16 bytes each) and
+    /// `entries` (one a shape; [`ShapeEntry::SIZE`] bytes each), kept from
+    /// frame to frame: the circles, ellipses, arcs, sectors, rectangles,
+    /// rounded rectangles and lines of the scene, filled or stroked
+    /// without dashes, are described once, in the first band that draws
+    /// them, and filled from the cache in every later band and frame
+    /// ([`ShapeCache`]). The same pixels as without; a shape whose outline
+    /// does not fit is drawn directly. Start with entries of
+    /// [`ShapeEntry::EMPTY`]; they may be shared by renderers made for each
+    /// frame (the frames are counted in them).
+    pub fn with_shape_cache(
+        mut self,
+        segments: &'a mut [PathSegment],
+        entries: &'a mut [ShapeEntry],
+    ) -> Self {
+        self.shapes = Some((segments, entries));
+        self
+    }
+
+    /// The shape cache's outlines found kept, and outlines described into
+    /// it, in the last frame.
+    pub fn shape_stats(&self) -> (u32, u32) {
+        self.shape_stats
     }
 
     /// The walk cache's hits and misses in the last frame.
@@ -247,6 +279,11 @@ impl<'a, const C: usize> Renderer<'a, C> {
         let bg = background.map(|v| v.min(crate::LIN_MAX));
         WalkCache::new(&mut *self.slots).clear();
         self.stats = (0, 0);
+        self.shape_stats = (0, 0);
+        let shape_frame = self
+            .shapes
+            .as_ref()
+            .map_or(0, |(_, entries)| ShapeCache::next_frame(entries));
         profile.start_frame();
         let mut report = FrameReport::default();
         let mut failed: Option<(i32, E)> = None;
@@ -265,10 +302,15 @@ impl<'a, const C: usize> Renderer<'a, C> {
             self.holds = None;
             let mut canvas = Canvas::typed(&mut buf, Some(WalkCache::new(&mut *self.slots)))
                 .with_frame(self.width, self.height);
+            if let Some((segments, entries)) = self.shapes.as_mut() {
+                canvas = canvas.with_shapes(ShapeCache::new(segments, entries, shape_frame));
+            }
             let r = draw(&mut canvas);
             let skipped = canvas.skipped();
             let (hits, misses) = canvas.cache_stats();
             self.stats = (self.stats.0 + hits, self.stats.1 + misses);
+            let (kept, described) = canvas.shape_stats();
+            self.shape_stats = (self.shape_stats.0 + kept, self.shape_stats.1 + described);
             if skipped.count > report.skipped.count {
                 report.skipped.count = skipped.count;
             }

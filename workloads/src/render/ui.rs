@@ -27,8 +27,10 @@ use embedded_graphics::geometry::AngleUnit;
 use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::{Arc, Circle, Polyline, PrimitiveStyle, Rectangle};
+use softedge::canvas::ShapeEntry;
 use softedge::color::IntoLinear;
 use softedge::draw::AaShape;
+use softedge::geom::FinePoint;
 use softedge::path::{Segment, SegmentBuffer, Shape as _};
 use softedge::prelude::*;
 use softedge::render::Renderer as FrameRenderer;
@@ -295,8 +297,8 @@ fn value_arc() -> Arc {
 }
 
 /// The scene's shapes, in painter's order: panel, gauge track, value arc,
-/// disc, header, two buttons, read-out (9 shapes).
-pub const SCENE_SHAPES: usize = 9;
+/// disc, header, two buttons, read-out (8 shapes).
+pub const SCENE_SHAPES: usize = 8;
 
 /// Draws the scene with softedge into one band's canvas.
 fn softedge_scene_band(c: &mut Canvas<'_, '_, 3, Rgb565>) -> Result<(), DrawError> {
@@ -491,6 +493,67 @@ pub fn scene_stream(
     r
 }
 
+/// Segments of the scene's shape cache: its outlines have 1 493 (the
+/// two arc strokes 703 and 522, the disc 248, the panel and bars 20).
+pub const CACHE_SEGMENTS: usize = 1600;
+/// Entries of the scene's shape cache: one a shape (9), and a margin.
+pub const CACHE_ENTRIES: usize = 12;
+
+/// A shape cache for the scene ([`Renderer::with_shape_cache`]), kept
+/// from frame to frame.
+///
+/// [`Renderer::with_shape_cache`]: softedge::render::Renderer::with_shape_cache
+pub struct SceneCache {
+    /// The outlines' segments.
+    pub segments: [Segment; CACHE_SEGMENTS],
+    /// One a shape.
+    pub entries: [ShapeEntry; CACHE_ENTRIES],
+}
+
+impl SceneCache {
+    /// Empty.
+    pub const fn new() -> Self {
+        Self {
+            segments: [Segment {
+                from: FinePoint::new(0, 0),
+                to: FinePoint::new(0, 0),
+            }; CACHE_SEGMENTS],
+            entries: [ShapeEntry::EMPTY; CACHE_ENTRIES],
+        }
+    }
+}
+
+impl Default for SceneCache {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// The scene drawn as [`softedge_scene`] draws it (the same closure),
+/// through a renderer with `cache` as its shape cache: the first frame
+/// describes every shape into it, the later ones fill them from it.
+/// Returns the cache's (kept, described) of the frame.
+#[inline(never)]
+pub fn softedge_scene_cached<D>(
+    window: Option<Rectangle>,
+    bufs: &mut Buffers<'_>,
+    cache: &mut SceneCache,
+    target: &mut D,
+) -> Result<(u32, u32), FrameError>
+where
+    D: DrawTarget<Color = Rgb565> + OriginDimensions,
+{
+    let r = renderer(&mut *bufs.acc, &mut *bufs.cover, &mut *bufs.slots3)?;
+    let mut r = r.with_shape_cache(&mut cache.segments, &mut cache.entries);
+    let report = match window {
+        None => r.render(target, &RGB565, [0; 3], softedge_scene_band),
+        Some(w) => r.render_window(target, &RGB565, [0; 3], w, softedge_scene_band),
+    }
+    .map_err(|_| FrameError)?;
+    black_box(report);
+    Ok(r.shape_stats())
+}
+
 /// Draws the scene with embedded-graphics (aliased) into `target`.
 fn eg_scene_shapes<D: DrawTarget<Color = Rgb565>>(target: &mut D, only: Option<Rectangle>) {
     let meets = |b: Rectangle| only.is_none_or(|d| !d.intersection(&b).is_zero_sized());
@@ -667,6 +730,45 @@ mod tests {
         for (n, cap) in counts.into_iter().zip(SCENE_SEGMENTS) {
             assert!(n <= cap && n * 6 >= cap * 5, "{counts:?}");
         }
+    }
+
+    #[test]
+    fn the_cached_scene_is_the_scene_bit_for_bit() {
+        let mut s = Storage::new();
+        let mut cache = std::boxed::Box::new(SceneCache::new());
+        let full = {
+            let mut f = Screen(vec![0x1234; 240 * 240]);
+            softedge_scene(None, &mut s.bufs(), &mut f).unwrap();
+            f
+        };
+        // The first frame describes the 8 shapes, the next ones none; the
+        // windows in between neither.
+        for (k, window) in [None, Some(DIRTY), None, Some(DIRTY)]
+            .into_iter()
+            .enumerate()
+        {
+            let mut f = Screen(vec![0x1234; 240 * 240]);
+            let (kept, described) =
+                softedge_scene_cached(window, &mut s.bufs(), &mut cache, &mut f).unwrap();
+            assert_eq!(
+                described,
+                if k == 0 { SCENE_SHAPES as u32 } else { 0 },
+                "frame {k}"
+            );
+            assert!(kept > 0);
+            for (i, (&a, &b)) in full.0.iter().zip(&f.0).enumerate() {
+                let p = Point::new((i % 240) as i32, (i / 240) as i32);
+                if window.is_none_or(|w| w.contains(p)) {
+                    assert_eq!(a, b, "frame {k}, {p:?}");
+                }
+            }
+        }
+        let used = cache
+            .entries
+            .iter()
+            .filter(|e| **e != ShapeEntry::EMPTY)
+            .count();
+        assert_eq!(used, SCENE_SHAPES);
     }
 
     #[test]

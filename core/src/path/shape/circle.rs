@@ -48,6 +48,10 @@ impl Circle {
 }
 
 impl Shape for Circle {
+    fn key(&self) -> Option<super::ShapeKey> {
+        Some((*self).into())
+    }
+
     fn describe<P: PathSink + ?Sized>(&self, sink: &mut P) {
         if self.radius == 0 {
             return;

@@ -58,6 +58,10 @@ impl Ellipse {
 }
 
 impl Shape for Ellipse {
+    fn key(&self) -> Option<super::ShapeKey> {
+        Some((*self).into())
+    }
+
     fn describe<P: PathSink + ?Sized>(&self, sink: &mut P) {
         let f = self.frame();
         if f.is_flat() {

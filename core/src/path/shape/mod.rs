@@ -37,12 +37,14 @@
 
 mod circle;
 mod ellipse;
+mod key;
 mod polyline;
 mod rect;
 mod sector;
 
 pub use circle::Circle;
 pub use ellipse::Ellipse;
+pub use key::ShapeKey;
 pub use polyline::{Line, Polygon, Polyline};
 pub use rect::{CornerRadii, Rectangle, RoundedRectangle};
 pub use sector::{Arc, Sector};
@@ -113,6 +115,15 @@ pub trait Shape {
         sink: &mut S,
     ) -> Result<(), StrokeError> {
         self.stroke_with(style, Tolerance::DEFAULT, sink)
+    }
+
+    /// The shape's geometry as a [`ShapeKey`], by which a
+    /// [`ShapeCache`](crate::canvas::ShapeCache) keeps its outline:
+    /// `None` (the default) for a shape described again wherever it is
+    /// drawn. A shape that gives a key must describe the same segments
+    /// whenever its key is the same.
+    fn key(&self) -> Option<ShapeKey> {
+        None
     }
 }
 

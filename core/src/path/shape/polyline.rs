@@ -103,6 +103,10 @@ impl Line {
 }
 
 impl Shape for Line {
+    fn key(&self) -> Option<super::ShapeKey> {
+        Some((*self).into())
+    }
+
     fn describe<P: PathSink + ?Sized>(&self, sink: &mut P) {
         sink.move_to(self.start);
         sink.line_to(self.end);

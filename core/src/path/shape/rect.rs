@@ -59,6 +59,10 @@ impl Rectangle {
 }
 
 impl Shape for Rectangle {
+    fn key(&self) -> Option<super::ShapeKey> {
+        Some((*self).into())
+    }
+
     fn describe<P: PathSink + ?Sized>(&self, sink: &mut P) {
         RoundedRectangle::new(*self, CornerRadii::ZERO).describe(sink);
     }
@@ -351,6 +355,10 @@ impl Outline {
 }
 
 impl Shape for RoundedRectangle {
+    fn key(&self) -> Option<super::ShapeKey> {
+        Some((*self).into())
+    }
+
     /// From the end of the top-left corner, clockwise, closed.
     fn describe<P: PathSink + ?Sized>(&self, sink: &mut P) {
         if self.rect.is_empty() {

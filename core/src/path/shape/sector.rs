@@ -71,6 +71,10 @@ impl Arc {
 }
 
 impl Shape for Arc {
+    fn key(&self) -> Option<super::ShapeKey> {
+        Some((*self).into())
+    }
+
     fn describe<P: PathSink + ?Sized>(&self, sink: &mut P) {
         let (t0, s) = clockwise(self.start, self.sweep);
         if self.radius == 0 || s == 0 {
@@ -196,6 +200,10 @@ impl Sector {
 }
 
 impl Shape for Sector {
+    fn key(&self) -> Option<super::ShapeKey> {
+        Some((*self).into())
+    }
+
     /// Apex, the first radius, the arc, back to the apex (closed); the
     /// whole circle for a sweep of a turn or more.
     fn describe<P: PathSink + ?Sized>(&self, sink: &mut P) {
