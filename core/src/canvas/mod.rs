@@ -443,7 +443,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
     ) -> Result<(), DrawError> {
         let tol = crate::path::Tolerance::DEFAULT;
         // The cache is taken out (and put back) only for a shape with a key.
-        let key = shape.key().filter(|_| self.shapes.is_some());
+        let key = self.shapes.as_ref().and_then(|_| shape.key());
         if let (Some(key), Some(mut shapes)) = (key, key.and_then(|_| self.shapes.take())) {
             let kept = shapes.outline(
                 retained::OutlineKey::fill(key, tol),
@@ -499,9 +499,10 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         let serial = self.next_serial();
         let tol = crate::path::Tolerance::DEFAULT;
         // The cache is taken out (and put back) only for a stroke with a key.
-        let key = shape
-            .key()
-            .filter(|_| self.shapes.is_some())
+        let key = self
+            .shapes
+            .as_ref()
+            .and_then(|_| shape.key())
             .and_then(|k| retained::OutlineKey::stroke(k, style, tol));
         if let (Some(key), Some(mut shapes)) = (key, key.and_then(|_| self.shapes.take())) {
             let kept = shapes.outline(

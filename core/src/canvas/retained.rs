@@ -142,7 +142,10 @@ impl Default for ShapeEntry {
 /// the frame being drawn: any number that changes from one frame to the
 /// next (a [`Renderer`](crate::render::Renderer) with a shape cache counts
 /// them itself); what the last frames drew and this one has not yet is
-/// what makes room.
+/// what makes room. Give every view the same slices, and do not write the
+/// segments between frames: an entry knows where its outline lies, not
+/// what it was (an outline beyond the segments given is described again,
+/// but one overwritten in place would be filled as it now reads).
 ///
 /// ```
 /// use softedge::canvas::{Canvas, ShapeCache, ShapeEntry};
@@ -263,19 +266,22 @@ impl<'a> ShapeCache<'a> {
                 .is_some_and(|e| e.key.as_ref() == Some(&key))
         });
         let mut retry = None;
+        let held = self.segments.len();
         if let Some(i) = found {
             self.cursor = i + 1;
             let e = self.entries.get_mut(i)?;
             let first_this_frame = e.frame != frame;
             e.frame = frame;
-            if e.len != DIRECT {
+            if e.kept() && e.end() <= held {
                 self.hits += 1;
                 let start = e.start as usize;
                 return Some((start..start + e.len as usize, e.bounds));
             }
-            // Drawn directly: tried again once a frame (room may have
-            // been freed since), in its own entry.
-            if !first_this_frame {
+            // Drawn directly (its outline found no room, or its stroke
+            // failed): tried again once a frame, room may have been freed
+            // since. Or kept over other segments than these (the entries
+            // were given other slices): described again.
+            if !e.kept() && !first_this_frame {
                 return None;
             }
             retry = Some(i);
@@ -330,8 +336,9 @@ impl<'a> ShapeCache<'a> {
     fn compact(&mut self) -> bool {
         let frame = self.frame;
         let before = self.entries.iter().map(ShapeEntry::end).max().unwrap_or(0);
+        let held = self.segments.len();
         for e in self.entries.iter_mut() {
-            if e.frame != frame {
+            if e.frame != frame || (e.kept() && e.end() > held) {
                 *e = ShapeEntry::EMPTY;
             } else if e.len == 0 {
                 e.start = 0;
@@ -743,6 +750,25 @@ mod tests {
             let (got, _, (_, d)) = frame(&scene, 12, Some((&mut segs, &mut entries, f)));
             assert!(got == want, "frame {f}");
             assert_eq!(d, described, "frame {f}");
+        }
+    }
+
+    #[test]
+    fn entries_given_other_segments_describe_again_without_a_panic() {
+        let mut rng = Lcg(0x51ce_0f0e_77e2_4a11);
+        let mut next = |m: u32| rng.below(u64::from(m)) as u32;
+        let scene: Vec<Item> = (0..5).map(|_| random_item(&mut next)).collect();
+        let want = frame(&scene, 48, None).0;
+        let mut big = std::vec![Segment::default(); 8192];
+        let mut entries = std::vec![ShapeEntry::EMPTY; 8];
+        let got = frame(&scene, 16, Some((&mut big, &mut entries, 0))).0;
+        assert!(got == want);
+        // The same entries over fewer segments (a misuse): the outlines
+        // that lie beyond them are described again, into these.
+        for (f, len) in [(1u32, 40usize), (2, 0), (3, 300)] {
+            let mut small = std::vec![Segment::default(); len];
+            let got = frame(&scene, 16, Some((&mut small, &mut entries, f))).0;
+            assert!(got == want, "frame {f}");
         }
     }
 }
