@@ -88,10 +88,8 @@ fn main() -> ! {
     static mut PANEL_COVER: [i32; panel::COVER_LEN] = [0; panel::COVER_LEN];
     static mut PANEL_OUT: [u16; panel::OUT_LEN] = [0; panel::OUT_LEN];
     static mut PANEL_SLOTS: [WalkSlot<3>; panel::SLOTS] = [WalkSlot::EMPTY; panel::SLOTS];
-    static mut PANEL_SEGMENTS: [Segment; panel::CACHE_SEGMENTS] = [Segment {
-        from: softedge::geom::FinePoint::new(0, 0),
-        to: softedge::geom::FinePoint::new(0, 0),
-    }; panel::CACHE_SEGMENTS];
+    static mut PANEL_SEGMENTS: [Segment; panel::CACHE_SEGMENTS] =
+        [Segment::ZERO; panel::CACHE_SEGMENTS];
     static mut PANEL_ENTRIES: [ShapeEntry; panel::CACHE_ENTRIES] =
         [ShapeEntry::EMPTY; panel::CACHE_ENTRIES];
     static mut STOCK: eg_side::StockFramebuffer = eg_side::StockFramebuffer::new();
@@ -378,20 +376,21 @@ fn main() -> ! {
         // shapes into the empty cache, the later ones fill them from it
         // (measured after one unmeasured full frame).
         for first in [true, false] {
+            // The cache as the measured frame finds it: empty, or filled
+            // by one whole frame.
+            let prepare = |bufs: &mut softedge_side::Buffers<'_>, cache: &mut ui::SceneCache| {
+                cache.entries.fill(ShapeEntry::EMPTY);
+                if !first {
+                    let mut warm = SpiCounter::new(side, side);
+                    let _ = ui::softedge_scene_cached(None, bufs, cache, &mut warm);
+                }
+            };
+            prepare(&mut bufs, scene_cache);
             let mut spi = SpiCounter::new(side, side);
-            scene_cache.entries.fill(ShapeEntry::EMPTY);
-            if !first {
-                let mut warm = SpiCounter::new(side, side);
-                let _ = ui::softedge_scene_cached(None, &mut bufs, scene_cache, &mut warm);
-            }
             let counted = ui::softedge_scene_cached(window, &mut bufs, scene_cache, &mut spi)
                 .ok()
                 .map(|_| spi);
-            scene_cache.entries.fill(ShapeEntry::EMPTY);
-            if !first {
-                let mut warm = SpiCounter::new(side, side);
-                let _ = ui::softedge_scene_cached(None, &mut bufs, scene_cache, &mut warm);
-            }
+            prepare(&mut bufs, scene_cache);
             bench.redraw(
                 if first {
                     "aa_rgb_cache_first"

@@ -57,7 +57,6 @@ use hal::gpio::FunctionSpi;
 use hal::pac;
 
 use softedge::canvas::ShapeEntry;
-use softedge::geom::FinePoint;
 use softedge::path::Segment;
 use softedge::prelude::*;
 
@@ -182,10 +181,7 @@ fn main() -> ! {
     static mut ACC: [i32; ACC_LEN] = [0; ACC_LEN];
     static mut COVER: [i32; COVER_LEN] = [0; COVER_LEN];
     // All zero bits: in .bss too.
-    static mut SEGMENTS: [Segment; CACHE_SEGMENTS] = [Segment {
-        from: FinePoint::new(0, 0),
-        to: FinePoint::new(0, 0),
-    }; CACHE_SEGMENTS];
+    static mut SEGMENTS: [Segment; CACHE_SEGMENTS] = [Segment::ZERO; CACHE_SEGMENTS];
 
     let Some(mut pac) = pac::Peripherals::take() else {
         defmt::panic!("peripherals taken twice");

@@ -442,28 +442,17 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         opacity: Opacity,
     ) -> Result<(), DrawError> {
         let tol = crate::path::Tolerance::DEFAULT;
-        // The cache is taken out (and put back) only for a shape with a key.
-        let key = self.shapes.as_ref().and_then(|_| shape.key());
-        if let (Some(key), Some(mut shapes)) = (key, key.and_then(|_| self.shapes.take())) {
-            let kept = shapes.outline(
-                retained::OutlineKey::fill(key, tol),
-                || paths::shape_bounds(shape),
-                |buf| {
-                    shape.fill_with(tol, buf);
-                    true
-                },
-            );
-            let r = kept.map(|(segments, bounds)| {
-                let outline = paths::Kept {
-                    segments: shapes.segments(segments),
-                    bounds,
-                };
-                self.fill_with(&outline, fill, rule, blend, opacity)
-            });
-            self.shapes = Some(shapes);
-            if let Some(r) = r {
-                return r;
-            }
+        let kept = self.kept_outline(
+            || shape.key().map(|k| retained::OutlineKey::fill(k, tol)),
+            || paths::shape_bounds(shape),
+            |buf| {
+                shape.fill_with(tol, buf);
+                true
+            },
+            |c, outline| c.fill_with(outline, fill, rule, blend, opacity),
+        );
+        if let Some(r) = kept {
+            return r;
         }
         let outline = paths::Filled {
             shape,
@@ -498,30 +487,21 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
     ) -> Result<(), DrawError> {
         let serial = self.next_serial();
         let tol = crate::path::Tolerance::DEFAULT;
-        // The cache is taken out (and put back) only for a stroke with a key.
-        let key = self
-            .shapes
-            .as_ref()
-            .and_then(|_| shape.key())
-            .and_then(|k| retained::OutlineKey::stroke(k, style, tol));
-        if let (Some(key), Some(mut shapes)) = (key, key.and_then(|_| self.shapes.take())) {
-            let kept = shapes.outline(
-                key,
-                || paths::Stroked::<S>::widen(paths::shape_bounds(shape), style),
-                |buf| shape.stroke_with(style, tol, buf).is_ok(),
-            );
-            let r = kept.map(|(segments, bounds)| {
-                let outline = paths::Kept {
-                    segments: shapes.segments(segments),
-                    bounds,
-                };
-                self.paint_outline(serial, &outline, FillRule::NonZero, fill, blend, opacity)
-                    .inspect_err(|&e| self.skip(serial, e))
-            });
-            self.shapes = Some(shapes);
-            if let Some(r) = r {
-                return r;
-            }
+        let kept = self.kept_outline(
+            || {
+                shape
+                    .key()
+                    .and_then(|k| retained::OutlineKey::stroke(k, style, tol))
+            },
+            || paths::Stroked::<S>::widen(paths::shape_bounds(shape), style),
+            |buf| shape.stroke_with(style, tol, buf).is_ok(),
+            |c, outline| {
+                c.paint_outline(serial, outline, FillRule::NonZero, fill, blend, opacity)
+                    .inspect_err(|&e| c.skip(serial, e))
+            },
+        );
+        if let Some(r) = kept {
+            return r;
         }
         let outline = paths::Stroked {
             shape,
@@ -539,6 +519,34 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
                     .map_or(Ok(()), |e| Err(DrawError::Stroke(e)))
             });
         r.inspect_err(|&e| self.skip(serial, e))
+    }
+
+    /// `paint` of the shape cache's outline of `key` (made from `bounds`
+    /// and `describe` if the cache has none yet: see
+    /// [`ShapeCache`]); `None` without a cache, a key or a kept outline:
+    /// draw the shape directly. The cache is taken out of the canvas for
+    /// the painting and put back.
+    fn kept_outline<R>(
+        &mut self,
+        key: impl FnOnce() -> Option<retained::OutlineKey>,
+        bounds: impl FnOnce() -> Option<FineRect>,
+        describe: impl Fn(&mut crate::path::SegmentBuffer<'_>) -> bool,
+        paint: impl FnOnce(&mut Self, &paths::Kept<'_>) -> R,
+    ) -> Option<R> {
+        self.shapes.as_ref()?;
+        let key = key()?;
+        let mut shapes = self.shapes.take()?;
+        let r = shapes
+            .outline(key, bounds, describe)
+            .map(|(segments, bounds)| {
+                let outline = paths::Kept {
+                    segments: shapes.segments(segments),
+                    bounds,
+                };
+                paint(self, &outline)
+            });
+        self.shapes = Some(shapes);
+        r
     }
 
     /// An outline in one paint.

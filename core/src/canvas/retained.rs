@@ -419,6 +419,30 @@ mod tests {
         }
     }
 
+    /// An opaque flat disc of radius `r` px centred on `(x, y)` px.
+    fn disc(x: i32, y: i32, r: u32) -> Item {
+        Item {
+            kind: 0,
+            c: FinePoint::new(x * 1024, y * 1024),
+            r: r * 1024,
+            r2: 0,
+            a: 0,
+            s: 0,
+            stroke: None,
+            color: 3000,
+            blend: Blend::Over,
+            op: Opacity::OPAQUE,
+        }
+    }
+
+    /// The segments of a disc's fill.
+    fn disc_segments(it: &Item) -> usize {
+        let mut store = std::vec![Segment::default(); 4096];
+        let mut buf = SegmentBuffer::new(&mut store);
+        crate::path::Shape::fill(&Circle::new(it.c, it.r), &mut buf);
+        buf.segments().len()
+    }
+
     fn draw(c: &mut Canvas<'_, '_, 1>, it: &Item) {
         let rect = Rectangle::new(it.c, 2 * it.r, it.r2);
         let shape: &dyn Fn(&mut Canvas<'_, '_, 1>) = &|c| {
@@ -583,29 +607,9 @@ mod tests {
 
     #[test]
     fn a_full_cache_makes_room_from_what_the_frame_has_not_drawn() {
-        use crate::path::Shape;
-        let c = |x, y| FinePoint::new(x * 1024, y * 1024);
-        let disc = |x: i32, y: i32, r: u32| Item {
-            kind: 0,
-            c: c(x, y),
-            r: r * 1024,
-            r2: 0,
-            a: 0,
-            s: 0,
-            stroke: None,
-            color: 3000,
-            blend: Blend::Over,
-            op: Opacity::OPAQUE,
-        };
         let a = [disc(20, 20, 12)];
         let b = [disc(40, 24, 14)];
-        let mut len = 0;
-        for it in [&a[0], &b[0]] {
-            let mut buf_store = std::vec![Segment::default(); 4096];
-            let mut buf = SegmentBuffer::new(&mut buf_store);
-            Circle::new(it.c, it.r).fill(&mut buf);
-            len = len.max(buf.segments().len());
-        }
+        let len = disc_segments(&a[0]).max(disc_segments(&b[0]));
         // Room for one disc's outline, not for two.
         let mut segs = std::vec![Segment::default(); len + len / 2];
         let mut entries = std::vec![ShapeEntry::EMPTY; 4];
@@ -627,27 +631,13 @@ mod tests {
 
     #[test]
     fn outlines_drawn_this_frame_move_together_to_make_room() {
-        use crate::path::Shape;
         let disc = |x: i32, r: u32| Item {
-            kind: 0,
-            c: FinePoint::new(x * 1024, 24 * 1024),
-            r: r * 1024,
-            r2: 0,
-            a: 0,
-            s: 0,
-            stroke: None,
             color: 1000 + 900 * x as u16 / 8,
-            blend: Blend::Over,
             op: Opacity::from_ratio(3, 4),
+            ..disc(x, 24, r)
         };
         let (a, b, c) = (disc(14, 10), disc(32, 12), disc(50, 11));
-        let count = |it: &Item| {
-            let mut store = std::vec![Segment::default(); 4096];
-            let mut buf = SegmentBuffer::new(&mut store);
-            Circle::new(it.c, it.r).fill(&mut buf);
-            buf.segments().len()
-        };
-        let (na, nb, nc) = (count(&a), count(&b), count(&c));
+        let (na, nb, nc) = (disc_segments(&a), disc_segments(&b), disc_segments(&c));
         // Room for a and b, or b and c, not for all three: in the second
         // frame c is described after a's outline is dropped and b's moved
         // to the front.
@@ -696,15 +686,11 @@ mod tests {
     fn a_shape_without_a_key_leaves_the_cache_to_the_next() {
         let item = |kind: u32, x: i32| Item {
             kind,
-            c: FinePoint::new(x * 1024, 20 * 1024),
-            r: 9 * 1024,
             r2: 6 * 1024,
             a: 40,
             s: 90,
-            stroke: None,
             color: 2000,
-            blend: Blend::Over,
-            op: Opacity::OPAQUE,
+            ..disc(x, 20, 9)
         };
         // A disc, a polygon (no key), a disc.
         let scene = [item(0, 16), item(7, 30), item(0, 44)];
@@ -722,24 +708,9 @@ mod tests {
 
     #[test]
     fn a_shape_drawn_directly_for_lack_of_room_is_tried_again_next_frame() {
-        let disc = |x: i32| Item {
-            kind: 0,
-            c: FinePoint::new(x * 1024, 24 * 1024),
-            r: 12 * 1024,
-            r2: 0,
-            a: 0,
-            s: 0,
-            stroke: None,
-            color: 3000,
-            blend: Blend::Over,
-            op: Opacity::OPAQUE,
-        };
-        let (a, b) = (disc(16), disc(46));
-        let mut store = std::vec![Segment::default(); 4096];
-        let mut buf = SegmentBuffer::new(&mut store);
-        crate::path::Shape::fill(&Circle::new(a.c, a.r), &mut buf);
+        let (a, b) = (disc(16, 24, 12), disc(46, 24, 12));
         // Room for one disc.
-        let mut segs = std::vec![Segment::default(); buf.segments().len() + 8];
+        let mut segs = std::vec![Segment::default(); disc_segments(&a) + 8];
         let mut entries = std::vec![ShapeEntry::EMPTY; 4];
         for (f, scene, described) in [
             (0, std::vec![a, b], 1),

@@ -36,6 +36,15 @@ pub struct Segment {
     pub to: FinePoint,
 }
 
+impl Segment {
+    /// From the origin to the origin: the `Default`, usable in a `const`
+    /// or `static` array (a shape cache's segments in `.bss`).
+    pub const ZERO: Self = Self {
+        from: FinePoint::new(0, 0),
+        to: FinePoint::new(0, 0),
+    };
+}
+
 /// Collects segments into a caller-provided slice; what does not fit is
 /// counted, not stored (check [`overflowed`](Self::overflowed)).
 ///

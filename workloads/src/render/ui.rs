@@ -30,7 +30,6 @@ use embedded_graphics::primitives::{Arc, Circle, Polyline, PrimitiveStyle, Recta
 use softedge::canvas::ShapeEntry;
 use softedge::color::IntoLinear;
 use softedge::draw::AaShape;
-use softedge::geom::FinePoint;
 use softedge::path::{Segment, SegmentBuffer, Shape as _};
 use softedge::prelude::*;
 use softedge::render::Renderer as FrameRenderer;
@@ -328,7 +327,8 @@ pub fn softedge_scene<D>(
 where
     D: DrawTarget<Color = Rgb565> + OriginDimensions,
 {
-    scene_into(window, bufs.acc, bufs.cover, bufs.slots3, target)
+    let mut r = renderer(&mut *bufs.acc, &mut *bufs.cover, &mut *bufs.slots3)?;
+    render_scene(&mut r, window, target, softedge_scene_band)
 }
 
 /// A softedge scene frame into the one-band DMA buffer `bufs.out16` (what
@@ -337,26 +337,25 @@ pub fn softedge_scene_stream(
     window: Option<Rectangle>,
     bufs: &mut Buffers<'_>,
 ) -> Result<(), FrameError> {
-    let mut sink = BandStream::new(&mut *bufs.out16, u32::from(FRAME), u32::from(FRAME));
-    scene_into(window, bufs.acc, bufs.cover, bufs.slots3, &mut sink)?;
-    black_box(sink.pixels());
-    Ok(())
+    scene_stream(bufs, |b, sink| softedge_scene(window, b, sink))
 }
 
-fn scene_into<D>(
+/// One frame of the scene by `r` into `target`, `band` drawing each band:
+/// the whole frame (`window` `None`, `Renderer::render`) or only `window`
+/// (`Renderer::render_window`).
+fn render_scene<D, F>(
+    r: &mut FrameRenderer<'_, 3>,
     window: Option<Rectangle>,
-    acc: &mut [i32],
-    cover: &mut [i32],
-    slots: &mut [WalkSlot<3>],
     target: &mut D,
+    band: F,
 ) -> Result<(), FrameError>
 where
     D: DrawTarget<Color = Rgb565> + OriginDimensions,
+    F: FnMut(&mut Canvas<'_, '_, 3, Rgb565>) -> Result<(), DrawError>,
 {
-    let mut r = renderer(acc, cover, slots)?;
     let report = match window {
-        None => r.render(target, &RGB565, [0; 3], softedge_scene_band),
-        Some(w) => r.render_window(target, &RGB565, [0; 3], w, softedge_scene_band),
+        None => r.render(target, &RGB565, [0; 3], band),
+        Some(w) => r.render_window(target, &RGB565, [0; 3], w, band),
     }
     .map_err(|_| FrameError)?;
     black_box(report);
@@ -469,17 +468,10 @@ where
     D: DrawTarget<Color = Rgb565> + OriginDimensions,
 {
     let mut r = renderer(&mut *bufs.acc, &mut *bufs.cover, &mut *bufs.slots3)?;
-    let band = |c: &mut Canvas<'_, '_, 3, Rgb565>| recorded_scene_band(c, rec);
-    let report = match window {
-        None => r.render(target, &RGB565, [0; 3], band),
-        Some(w) => r.render_window(target, &RGB565, [0; 3], w, band),
-    }
-    .map_err(|_| FrameError)?;
-    black_box(report);
-    Ok(())
+    render_scene(&mut r, window, target, |c| recorded_scene_band(c, rec))
 }
 
-/// `scene` (one of the above) into the one-band DMA buffer `bufs.out16`
+/// `scene` (one of this module's) into the one-band DMA buffer `bufs.out16`
 /// (what is measured).
 pub fn scene_stream(
     bufs: &mut Buffers<'_>,
@@ -496,7 +488,7 @@ pub fn scene_stream(
 /// Segments of the scene's shape cache: its outlines have 1 493 (the
 /// two arc strokes 703 and 522, the disc 248, the panel and bars 20).
 pub const CACHE_SEGMENTS: usize = 1600;
-/// Entries of the scene's shape cache: one a shape (9), and a margin.
+/// Entries of the scene's shape cache: one a shape (8), and a margin.
 pub const CACHE_ENTRIES: usize = 12;
 
 /// A shape cache for the scene ([`Renderer::with_shape_cache`]), kept
@@ -514,10 +506,7 @@ impl SceneCache {
     /// Empty.
     pub const fn new() -> Self {
         Self {
-            segments: [Segment {
-                from: FinePoint::new(0, 0),
-                to: FinePoint::new(0, 0),
-            }; CACHE_SEGMENTS],
+            segments: [Segment::ZERO; CACHE_SEGMENTS],
             entries: [ShapeEntry::EMPTY; CACHE_ENTRIES],
         }
     }
@@ -545,12 +534,7 @@ where
 {
     let r = renderer(&mut *bufs.acc, &mut *bufs.cover, &mut *bufs.slots3)?;
     let mut r = r.with_shape_cache(&mut cache.segments, &mut cache.entries);
-    let report = match window {
-        None => r.render(target, &RGB565, [0; 3], softedge_scene_band),
-        Some(w) => r.render_window(target, &RGB565, [0; 3], w, softedge_scene_band),
-    }
-    .map_err(|_| FrameError)?;
-    black_box(report);
+    render_scene(&mut r, window, target, softedge_scene_band)?;
     Ok(r.shape_stats())
 }
 
