@@ -316,17 +316,19 @@ fn over_flat_row<const C: usize, const SIGNED: bool>(
         let at = i * C;
         i += 1;
         if s == COVER_ONE {
-            // The run's whole pixels, to the next change (counted first:
-            // a loop bounded by the pixels left would make the compiler
-            // divide their count by C).
-            let mut j = i;
-            while changes.get(j) == Some(&0) {
-                j += 1;
+            // The run's whole pixels: to the next change (found first, a
+            // tight loop), then stored from a slice of exactly that many
+            // pixels, stepped a chunk at a time (a loop bounded by the
+            // pixels left would make the compiler divide their count by
+            // C, a library call on the Cortex-M0).
+            let rest = changes.get(i..).unwrap_or_default();
+            let k = rest.iter().position(|&d| d != 0).unwrap_or(rest.len());
+            let mut run = px.get_mut(at..at + (k + 1) * C).unwrap_or_default();
+            while let Some((p, more)) = core::mem::take(&mut run).split_first_chunk_mut::<C>() {
+                *p = *f;
+                run = more;
             }
-            if let Some(run) = px.get_mut(at..j * C) {
-                fill(run, f, j + 1 - i);
-            }
-            i = j;
+            i += k;
         } else if s != 0 {
             if let Some(p) = px
                 .get_mut(at..at + C)
@@ -354,37 +356,6 @@ fn over_flat_row<const C: usize, const SIGNED: bool>(
         // none.
         (0, n.saturating_sub(1))
     }
-}
-
-/// The first `n` pixels of `px` set to the flat colour `f`; the rest of
-/// `px` back (out of line, like [`blend_over`]). The run is split off
-/// first and stepped a pixel at a time, four to a step, counted by `n`:
-/// a loop bounded by the run's length alone is unrolled by the compiler
-/// with a trip count found by dividing that length by `C`, a library call
-/// on the Cortex-M0 that cost more than the stores of a typical run (9
-/// pixels in the benchmark's screen).
-#[inline(never)]
-fn fill<'p, const C: usize>(px: &'p mut [i32], f: &[i32; C], n: usize) -> &'p mut [i32] {
-    let end = (n * C).min(px.len());
-    let (mut run, rest) = px.split_at_mut(end);
-    let f = *f;
-    let mut put = || {
-        if let Some((p, more)) = core::mem::take(&mut run).split_first_chunk_mut::<C>() {
-            *p = f;
-            run = more;
-        }
-    };
-    let mut k = n;
-    while k >= 4 {
-        for _ in 0..4 {
-            put();
-        }
-        k -= 4;
-    }
-    for _ in 0..k {
-        put();
-    }
-    rest
 }
 
 /// A partly covered pixel of an opaque flat over (out of line: the row

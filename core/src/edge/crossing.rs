@@ -58,6 +58,16 @@
 //! 2^18`): `i32`. Set-up divides in `u64` with numerators below `2^64`
 //! (stated at each), once per edge (the constants) and once per walk that
 //! starts at a crossing without a stepped state (the state); stepping adds.
+//!
+//! The spill `k x² / 2` depends on the slope alone, so the constants are
+//! made for the extents divided by their common power of two (`du / 2^t`,
+//! `dv / 2^t`, and `xi / 2^t`, which is a multiple of it): the same
+//! floors over a smaller `D`. When `D < 2^31` ([`Tracker::Narrow`]: every
+//! edge of up to 8 px on the fine grid, every edge between whole or half
+//! pixels (`t >= 9`: `du, dv <= 2^13` after it), and between 1/16-px
+//! points those of up to 512 px) the remainders are `u32`, and a step is 32-bit
+//! additions and compares only (on the Cortex-M0 about half the
+//! instructions of the `u64` ones).
 
 use super::canon::{Canon, N};
 use crate::arith::{mul_wide, udivmod};
@@ -73,12 +83,79 @@ const N2_OVER_Z: u64 = 1 << (2 * FINE_BITS - Z_BITS);
 const N_OVER_Z: u64 = 1 << (FINE_BITS - Z_BITS);
 const TWO_N_OVER_Z: u64 = 2 * N_OVER_Z;
 
+/// The integer type of the remainders: `u64` in general, `u32` for the
+/// edges whose denominator `D` is below `2^31` (every sum of two
+/// remainders below `2^32`), which step in half the instructions on the
+/// Cortex-M0 and keep half the bytes.
+pub(crate) trait Rem: Copy + PartialOrd + core::fmt::Debug + Default {
+    /// `self + o`, wrapping (a sum of two remainders never wraps: both
+    /// are below `D` and `2 D` fits; a difference that wrapped comes back).
+    fn plus(self, o: Self) -> Self;
+    /// `self - o`, wrapping.
+    fn minus(self, o: Self) -> Self;
+    /// `2 self` (below the type's range by the same bound).
+    fn twice(self) -> Self;
+    /// `v` in this type (`v` within its range: the caller checks).
+    fn of_u64(v: u64) -> Self;
+    /// The value as a `u64`.
+    fn to_u64(self) -> u64;
+}
+
+impl Rem for u64 {
+    #[inline(always)]
+    fn plus(self, o: Self) -> Self {
+        self.wrapping_add(o)
+    }
+    #[inline(always)]
+    fn minus(self, o: Self) -> Self {
+        self.wrapping_sub(o)
+    }
+    #[inline(always)]
+    fn twice(self) -> Self {
+        2 * self
+    }
+    #[inline(always)]
+    fn of_u64(v: u64) -> Self {
+        v
+    }
+    #[inline(always)]
+    fn to_u64(self) -> u64 {
+        self
+    }
+}
+
+impl Rem for u32 {
+    #[inline(always)]
+    fn plus(self, o: Self) -> Self {
+        self.wrapping_add(o)
+    }
+    #[inline(always)]
+    fn minus(self, o: Self) -> Self {
+        self.wrapping_sub(o)
+    }
+    #[inline(always)]
+    fn twice(self) -> Self {
+        self.wrapping_mul(2)
+    }
+    #[inline(always)]
+    fn of_u64(v: u64) -> Self {
+        v as u32
+    }
+    #[inline(always)]
+    fn to_u64(self) -> u64 {
+        u64::from(self)
+    }
+}
+
+/// Below this `D` the tracker's remainders are `u32` (`2 D < 2^32`).
+const NARROW_D: u64 = 1 << 31;
+
 /// An exact rational `q + r / d` over a denominator `d` kept elsewhere,
 /// with `0 <= r < d`.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub(crate) struct Qr {
+pub(crate) struct Qr<R = u64> {
     pub q: i32,
-    pub r: u64,
+    pub r: R,
 }
 
 impl Qr {
@@ -102,21 +179,40 @@ impl Qr {
         }
     }
 
+    /// The same value with the remainder in `R` (below `D`, which the
+    /// caller has checked fits).
+    fn narrow<R: Rem>(self) -> Qr<R> {
+        Qr {
+            q: self.q,
+            r: R::of_u64(self.r),
+        }
+    }
+}
+
+impl<R: Rem> Qr<R> {
+    /// The same value with a `u64` remainder.
+    fn wide(self) -> Qr {
+        Qr {
+            q: self.q,
+            r: self.r.to_u64(),
+        }
+    }
+
     #[inline]
-    fn add(self, o: Self, d: u64) -> Self {
-        let (mut q, mut r) = (self.q.wrapping_add(o.q), self.r + o.r);
+    fn add(self, o: Self, d: R) -> Self {
+        let (mut q, mut r) = (self.q.wrapping_add(o.q), self.r.plus(o.r));
         if r >= d {
-            r -= d;
+            r = r.minus(d);
             q = q.wrapping_add(1);
         }
         Self { q, r }
     }
 
     #[inline]
-    fn sub(self, o: Self, d: u64) -> Self {
-        let (mut q, mut r) = (self.q.wrapping_sub(o.q), self.r.wrapping_sub(o.r));
+    fn sub(self, o: Self, d: R) -> Self {
+        let (mut q, mut r) = (self.q.wrapping_sub(o.q), self.r.minus(o.r));
         if self.r < o.r {
-            r = r.wrapping_add(d);
+            r = r.plus(d);
             q = q.wrapping_sub(1);
         }
         Self { q, r }
@@ -126,45 +222,96 @@ impl Qr {
 /// The per-edge constants of the crossing walk (set-up: once per edge,
 /// when its walk first reaches an interior crossing).
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Crossings {
+pub(crate) struct Crossings<R = u64> {
+    /// `log2` of the power of two the extents were divided by: the
+    /// constants below are those of `du / 2^t`, `dv / 2^t` (the same
+    /// slope, so the same spills, over a smaller denominator), and a
+    /// crossing's `xi` is divided by it too.
+    t: u32,
     /// `D = Z du dv`.
-    d: u64,
+    d: R,
     /// `N dv`: the range of `xi`.
-    ndv: u64,
+    ndv: R,
     /// `xi`'s step without wrap, `d1 = N (du mod dv)`.
-    d1: u64,
+    d1: R,
     /// The crossing's column step without wrap, `floor(du / dv)`.
     cols: i32,
-    k1: Qr,
-    k2: Qr,
-    k3: Qr,
+    k1: Qr<R>,
+    k2: Qr<R>,
+    k3: Qr<R>,
     /// `m1 = 2 d1 N dv / D` and `cr = (N dv)² / D`, for the right spill and
     /// the direct evaluation.
-    m1: Qr,
-    cr: Qr,
+    m1: Qr<R>,
+    cr: Qr<R>,
 }
 
 /// The next crossing of a walk: boundary `v = m N` at canonical column
 /// `col`, with its exact spill state.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Crossing {
-    xi: u64,
-    l: Qr,
-    a: Qr,
-    b: Qr,
+pub(crate) struct Crossing<R = u64> {
+    xi: R,
+    l: Qr<R>,
+    a: Qr<R>,
+    b: Qr<R>,
     /// Boundary index: the crossing of `v = m N`.
     pub m: i32,
     /// Canonical major column holding it.
     pub col: i32,
 }
 
+/// The crossing constants of an edge, in the narrowest remainders that
+/// hold them.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Tracker {
+    Wide(Crossings),
+    /// `D < 2^31` (short edges, and long ones whose extents share a
+    /// power of two: see the module's ranges).
+    Narrow(Crossings<u32>),
+}
+
+impl Tracker {
+    /// [`Crossings::new`], narrowed when `D` allows.
+    pub(crate) fn new(du: i32, dv: i32) -> Option<Self> {
+        let k = Crossings::new(du, dv)?;
+        Some(if k.d < NARROW_D {
+            Tracker::Narrow(k.narrow())
+        } else {
+            Tracker::Wide(k)
+        })
+    }
+}
+
 impl Crossings {
+    /// The same constants with remainders in `R` (`D < 2^31` when `R` is
+    /// `u32`: the caller checks; every value below is below `D` or `N dv
+    /// < 2^23`).
+    fn narrow<R: Rem>(&self) -> Crossings<R> {
+        Crossings {
+            t: self.t,
+            d: R::of_u64(self.d),
+            ndv: R::of_u64(self.ndv),
+            d1: R::of_u64(self.d1),
+            cols: self.cols,
+            k1: self.k1.narrow(),
+            k2: self.k2.narrow(),
+            k3: self.k3.narrow(),
+            m1: self.m1.narrow(),
+            cr: self.cr.narrow(),
+        }
+    }
+
     /// Constants for a canonical edge with extents `du >= dv > 0` (fine
     /// units); `None` when `dv == 0` (no crossings).
     pub(crate) fn new(du: i32, dv: i32) -> Option<Self> {
         if dv <= 0 || du < dv {
             return None;
         }
+        // The spill `x² dv / (Z du)` depends on the slope alone: the
+        // common power of two of the extents is taken out (vertices on
+        // whole pixels share 2^10), which keeps the divisions below, the
+        // direct evaluations and the stepped remainders in fewer bits.
+        let t = (du | dv).trailing_zeros();
+        let (du, dv) = (du >> t, dv >> t);
         let (udu, udv) = (du as u64, dv as u64);
         let (cols, rho) = udivmod(udu, udv);
         let dudv = mul_wide(du as u32, dv as u32);
@@ -179,6 +326,7 @@ impl Crossings {
         let k2 = k1.sub(m1, d);
         let k3 = k2.sub(m1, d).add(cr, d).add(cr, d);
         Some(Self {
+            t,
             d,
             ndv: u64::from(N as u32) * udv,
             d1: u64::from(N as u32) * rho,
@@ -190,46 +338,53 @@ impl Crossings {
             cr,
         })
     }
+}
 
+impl<R: Rem> Crossings<R> {
     /// The crossing of boundary `v = m N` of edge `e` (whose extents these
     /// constants are made for), evaluated directly (set-up: four
-    /// divisions).
-    pub(crate) fn at(&self, e: &Canon, m: i32) -> Crossing {
+    /// divisions, in `u64`).
+    pub(crate) fn at(&self, e: &Canon, m: i32) -> Crossing<R> {
+        let d = self.d.to_u64();
+        let d1 = self.d1.to_u64();
         let (col, xi) = e.crossing(m);
-        let udu = e.du as u64;
-        let rho = (self.d1 >> FINE_BITS) as u32;
+        // `xi` is a multiple of 2^t (so are `du`, `dv` and the range
+        // `N dv`): the crossing of the reduced extents.
+        let xi = xi >> self.t;
+        let (udu, udv) = ((e.du >> self.t) as u64, (e.dv >> self.t) as u32);
+        let rho = (d1 >> FINE_BITS) as u32;
         // L = xi² / D: xi < 2^32, so xi² < 2^64.
-        let l = Qr::of(mul_wide(xi as u32, xi as u32), self.d, 0);
+        let l = Qr::of(mul_wide(xi as u32, xi as u32), d, 0);
         // A = d1 (2 xi + d1) / D = N rho (2 xi + N rho) / (Z du dv):
         // numerator 2^5 rho (2 xi + d1) < 2^(5 + 22 + 34).
-        let num = 2 * mul_wide(rho, xi as u32) + mul_wide(rho, self.d1 as u32);
-        let a = Qr::of(N_OVER_Z * num, self.d >> Z_BITS, Z_BITS);
+        let num = 2 * mul_wide(rho, xi as u32) + mul_wide(rho, d1 as u32);
+        let a = Qr::of(N_OVER_Z * num, d >> Z_BITS, Z_BITS);
         // M = 2 xi N dv / D = 2 N xi / (Z du): numerator < 2^(6 + 32).
-        let mm = Qr::over_du(TWO_N_OVER_Z * xi, udu, e.dv as u32);
+        let mm = Qr::over_du(TWO_N_OVER_Z * xi, udu, udv);
         // B = (2 xi d2 + d2²) / D = A - M - m1 + cr.
-        let b = a.sub(mm, self.d).sub(self.m1, self.d).add(self.cr, self.d);
+        let b = a.sub(mm, d).sub(self.m1.wide(), d).add(self.cr.wide(), d);
         Crossing {
-            xi,
-            l,
-            a,
-            b,
+            xi: R::of_u64(xi),
+            l: l.narrow(),
+            a: a.narrow(),
+            b: b.narrow(),
             m,
             col,
         }
     }
 }
 
-impl Crossing {
+impl<R: Rem> Crossing<R> {
     /// True when the crossing lies in the left half of its column (or on
     /// its centre): the centre is past it, the spill is the left triangle.
     #[inline]
-    pub(crate) fn is_left(&self, k: &Crossings) -> bool {
-        2 * self.xi <= k.ndv
+    pub(crate) fn is_left(&self, k: &Crossings<R>) -> bool {
+        self.xi.twice() <= k.ndv
     }
 
     /// The spill, in area units: the floor of the exact triangle.
     #[inline]
-    pub(crate) fn spill(&self, k: &Crossings) -> i32 {
+    pub(crate) fn spill(&self, k: &Crossings<R>) -> i32 {
         if self.is_left(k) {
             self.l.q
         } else {
@@ -239,12 +394,12 @@ impl Crossing {
 
     /// On to the next boundary, `m + 1`: additions and compares.
     #[inline]
-    pub(crate) fn advance(&mut self, k: &Crossings) {
-        self.xi += k.d1;
+    pub(crate) fn advance(&mut self, k: &Crossings<R>) {
+        self.xi = self.xi.plus(k.d1);
         self.col += k.cols;
         self.m += 1;
         if self.xi >= k.ndv {
-            self.xi -= k.ndv;
+            self.xi = self.xi.minus(k.ndv);
             self.col += 1;
             self.l = self.l.add(self.b, k.d);
             self.a = self.a.add(k.k2, k.d);
@@ -294,26 +449,53 @@ mod tests {
             (-2_097_152, 1_000_000, 4_194_304, 1_000_003),
             (0, 1000, 2_000_000, 3_000),
             (-2_097_152, -2_097_152, 4_194_304, 4_194_304),
+            // Extents with a common power of two (whole pixels, 1/16 px,
+            // 2^21), on and off the same grid: the reduced constants.
+            (3 * 1024, 5 * 1024 + 512, 75 * 1024, 33 * 1024),
+            (64 * 7, -64 * 3, 64 * 1000, 64 * 999),
+            (5, 7, 4096, 2048),
+            (-1_000_001, 3, 1 << 21, 3 << 19),
+            (0, 0, 240 * 1024, 239 * 1024),
+            // Short edges on the fine grid (`u32` remainders), the
+            // largest `D` that narrows and the smallest that does not.
+            (123, 456, 7_777, 5_555),
+            (1, 0, 11_585, 5_792),
+            (1, 0, 11_587, 5_793),
         ];
+        let mut narrowed = 0;
         for (u0, v0, du, dv) in cases {
             let e = Canon::new(FinePoint::new(u0, v0), FinePoint::new(u0 + du, v0 + dv)).unwrap();
             assert!(!e.transposed && !e.mirrored);
             let k = Crossings::new(du, dv).unwrap();
-            let n = 1i32 << FINE_BITS;
-            let first = v0.div_euclid(n) + 1;
-            let last = (v0 + dv - 1).div_euclid(n);
-            let mut c = k.at(&e, first);
-            for m in first..=last.min(first + 5000) {
-                let (spill, col, left) = exact(&e, m);
-                assert_eq!(c.m, m);
-                assert_eq!(i64::from(c.col), col, "column of crossing {m}");
-                assert_eq!(c.is_left(&k), left);
-                assert_eq!(i64::from(c.spill(&k)), spill, "spill of crossing {m}");
-                // A direct start anywhere agrees with the stepped state.
-                let d = k.at(&e, m);
-                assert_eq!((d.xi, d.l, d.a, d.b), (c.xi, c.l, c.a, c.b));
-                c.advance(&k);
+            check_every_crossing(&e, &k);
+            // The tracker the walk uses: narrowed exactly when `D` fits.
+            match Tracker::new(du, dv).unwrap() {
+                Tracker::Narrow(kn) => {
+                    assert!(k.d < NARROW_D);
+                    check_every_crossing(&e, &kn);
+                    narrowed += 1;
+                }
+                Tracker::Wide(_) => assert!(k.d >= NARROW_D),
             }
+        }
+        assert_eq!(narrowed, 10, "the cases narrow as planned");
+    }
+
+    fn check_every_crossing<R: Rem + PartialEq>(e: &Canon, k: &Crossings<R>) {
+        let n = 1i32 << FINE_BITS;
+        let first = e.v0.div_euclid(n) + 1;
+        let last = (e.v1 - 1).div_euclid(n);
+        let mut c = k.at(e, first);
+        for m in first..=last.min(first + 5000) {
+            let (spill, col, left) = exact(e, m);
+            assert_eq!(c.m, m);
+            assert_eq!(i64::from(c.col), col, "column of crossing {m}");
+            assert_eq!(c.is_left(k), left);
+            assert_eq!(i64::from(c.spill(k)), spill, "spill of crossing {m}");
+            // A direct start anywhere agrees with the stepped state.
+            let d = k.at(e, m);
+            assert!((d.xi, d.l, d.a, d.b) == (c.xi, c.l, c.a, c.b));
+            c.advance(k);
         }
     }
 

@@ -13,7 +13,7 @@ use core::ops::Range;
 
 use super::area::clamped_area;
 use super::canon::{cell_of, Canon, Lv, H_BITS, N};
-use super::crossing::{Crossing, Crossings};
+use super::crossing::{Crossing, Tracker};
 use super::{AreaMode, CoverSink, DeltaSink, Forward};
 use crate::arith::{mul_wide, udivmod};
 use crate::{COVER_BITS, COVER_ONE};
@@ -50,6 +50,8 @@ enum Next {
     Done,
     /// The next crossing at or after the walk's column.
     At(Crossing),
+    /// The same, for a [`Tracker::Narrow`] (`u32` remainders).
+    AtN(Crossing<u32>),
     /// One of the last few interior crossings, evaluated directly:
     /// boundary `m` (the walk needs those before `end`), its column, its
     /// spill (area units), and whether the line leaves the row there (the
@@ -69,6 +71,7 @@ impl Next {
     fn col(&self) -> i32 {
         match self {
             Next::At(c) => c.col,
+            Next::AtN(c) => c.col,
             Next::Direct { col, .. } => *col,
             Next::Done | Next::Unset => i32::MAX,
         }
@@ -77,9 +80,10 @@ impl Next {
     /// The crossing in column `a`, if any: whether the line leaves the
     /// row there.
     #[inline]
-    fn down_at(&self, a: i32, cross: &Option<Crossings>) -> Option<bool> {
+    fn down_at(&self, a: i32, cross: &Option<Tracker>) -> Option<bool> {
         match (self, cross) {
-            (Next::At(c), Some(k)) if c.col == a => Some(!c.is_left(k)),
+            (Next::At(c), Some(Tracker::Wide(k))) if c.col == a => Some(!c.is_left(k)),
+            (Next::AtN(c), Some(Tracker::Narrow(k))) if c.col == a => Some(!c.is_left(k)),
             (Next::Direct { col, down, .. }, _) if *col == a => Some(*down),
             _ => None,
         }
@@ -88,9 +92,14 @@ impl Next {
     /// The spill of the crossing in column `a` (see
     /// [`down_at`](Self::down_at)), and on to the next crossing.
     #[inline(always)]
-    fn take_spill(&mut self, e: &Canon, cross: &Option<Crossings>) -> i32 {
+    fn take_spill(&mut self, e: &Canon, cross: &Option<Tracker>) -> i32 {
         match (&mut *self, cross) {
-            (Next::At(c), Some(k)) => {
+            (Next::At(c), Some(Tracker::Wide(k))) => {
+                let t = c.spill(k);
+                c.advance(k);
+                t
+            }
+            (Next::AtN(c), Some(Tracker::Narrow(k))) => {
                 let t = c.spill(k);
                 c.advance(k);
                 t
@@ -133,10 +142,14 @@ const DIRECT: i32 = 4;
 #[inline(never)]
 fn set_direct(x_out: &mut Next, e: &Canon, m: i32, end: i32) {
     let (col, xi) = e.crossing(m);
-    let ndv = u64::from(N as u32) * e.dv as u64;
+    // Over the extents' common power of two taken out (the slope, hence
+    // the spill, is the same; `xi` is a multiple of it).
+    let t = (e.du | e.dv).trailing_zeros();
+    let (du, dv, xi) = (e.du >> t, e.dv >> t, xi >> t);
+    let ndv = u64::from(N as u32) * dv as u64;
     let left = 2 * xi <= ndv;
     let x = if left { xi } else { ndv - xi } as u32;
-    let d = mul_wide(e.du as u32, e.dv as u32) << crate::edge::crossing::Z_BITS;
+    let d = mul_wide(du as u32, dv as u32) << crate::edge::crossing::Z_BITS;
     let (t, _) = udivmod(mul_wide(x, x), d);
     *x_out = Next::Direct {
         m,
@@ -192,7 +205,7 @@ pub struct EdgeWalk {
     /// Where the last band's walk stopped (stepped in place by the next).
     resume: Option<Resume>,
     /// The crossing constants, once a walk has needed them.
-    cross: Option<Crossings>,
+    cross: Option<Tracker>,
 }
 
 /// The set-up of an [`EdgeWalk`], apart from its state (so that a walk
@@ -341,7 +354,11 @@ impl EdgeWalk {
             return;
         }
         if self.g.e.transposed {
-            self.y_major(rows, out);
+            if self.g.e.mirrored {
+                self.y_major::<S, true>(rows, out);
+            } else {
+                self.y_major::<S, false>(rows, out);
+            }
         } else if self.g.e.mirrored {
             self.x_major::<S, true>(rows, out);
         } else {
@@ -482,7 +499,7 @@ impl Geom {
     /// Written to `x` in place (a tracker is a few dozen words).
     /// `few`: the walk needs at most [`DIRECT`] more crossings, however
     /// many the edge has left (it is dropped after this band).
-    fn track(&self, cross: &mut Option<Crossings>, x: &mut Next, a: i32, few: bool) {
+    fn track(&self, cross: &mut Option<Tracker>, x: &mut Next, a: i32, few: bool) {
         if !self.exact {
             *x = Next::Done;
             return;
@@ -511,19 +528,25 @@ impl Geom {
             return;
         }
         if cross.is_none() {
-            *cross = Crossings::new(self.e.du, self.e.dv);
+            *cross = Tracker::new(self.e.du, self.e.dv);
         }
         *x = match cross {
-            Some(k) => Next::At(k.at(&self.e, m)),
+            Some(Tracker::Wide(k)) => Next::At(k.at(&self.e, m)),
+            Some(Tracker::Narrow(k)) => Next::AtN(k.at(&self.e, m)),
             None => Next::Done,
         };
     }
 
     /// Moves the tracker past the crossings in columns up to `a` (an end
     /// column: its crossings are in its direct areas).
-    fn skip_crossings(&self, cross: &Option<Crossings>, x: &mut Next, a: i32) {
+    fn skip_crossings(&self, cross: &Option<Tracker>, x: &mut Next, a: i32) {
         match (&mut *x, cross) {
-            (Next::At(c), Some(k)) => {
+            (Next::At(c), Some(Tracker::Wide(k))) => {
+                while c.col <= a && c.m <= self.last_boundary() {
+                    c.advance(k);
+                }
+            }
+            (Next::AtN(c), Some(Tracker::Narrow(k))) => {
                 while c.col <= a && c.m <= self.last_boundary() {
                     c.advance(k);
                 }
@@ -925,7 +948,7 @@ impl EdgeWalk {
     /// boundary `b`), a cell `(a, b)` of canonical area `S` is `-w S` at
     /// `mpos(b)` and `+w S` at `mpos(b + 1)` of row `a`, the row's cover
     /// `+w h` at `mpos(bc)`.
-    fn y_major<S: DeltaSink>(&mut self, rows: Range<i32>, mut out: S) {
+    fn y_major<S: DeltaSink, const MIRRORED: bool>(&mut self, rows: Range<i32>, mut out: S) {
         let g = &self.g;
         let lo = rows.start.max(g.a0);
         let hi = rows.end.min(g.a1 + 1);
@@ -933,9 +956,8 @@ impl EdgeWalk {
             return;
         }
         let w = i32::from(g.e.dir);
-        let mirrored = g.e.mirrored;
-        let mpos = |b: i32| if mirrored { b.saturating_neg() } else { b };
-        let step_x = if mirrored { -1 } else { 1 };
+        let mpos = |b: i32| if MIRRORED { b.saturating_neg() } else { b };
+        let step_x = if MIRRORED { -1 } else { 1 };
         // The state is stepped where it is kept (a start is written over a
         // stale one): a copy in and out would cost as much as a few rows.
         if !matches!(&self.resume, Some(r) if r.a == lo) {
