@@ -412,6 +412,88 @@ impl<R: Rem> Crossing<R> {
     }
 }
 
+/// A walk's crossings one at a time, without the stepping constants of
+/// [`Crossings`]: the first evaluated directly (two divisions), each next
+/// one stepped from it (`xi += d1`, one column more when that passes
+/// `N dv`) and its spill divided out (one division). Cheaper than the
+/// tracker's set-up (eight divisions and the `u64` products of its
+/// constants) for a walk that needs a band's worth of crossings and is
+/// then dropped; the same floors (both are `x² / D` exactly).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Direct {
+    /// Boundary index and the canonical column holding its crossing.
+    pub m: i32,
+    pub col: i32,
+    /// The spill, in area units: the floor of the exact triangle.
+    pub spill: i32,
+    /// Whether the crossing lies right of the column centre (the line
+    /// leaves the row there).
+    pub down: bool,
+    /// `xi`, `d1 = N (du mod dv)`, `N dv` and `D`, of the extents over
+    /// their common power of two (as in [`Crossings`]); the column step
+    /// `floor(du / dv)`. `N dv < 2^32` after the reduction (`dv = 2^22`
+    /// only when `du = dv`, which reduces to 1), so `xi` and `d1`, below
+    /// it, are `u32` too.
+    xi: u32,
+    d1: u32,
+    ndv: u32,
+    d: u64,
+    cols: i32,
+}
+
+impl Direct {
+    /// The crossing of boundary `v = m N` of `e` (`v0 < m N <= v1`:
+    /// `dv > 0`).
+    pub(crate) fn at(e: &Canon, m: i32) -> Self {
+        let (col, xi) = e.crossing(m);
+        let t = (e.du | e.dv).trailing_zeros();
+        let (du, dv) = ((e.du >> t) as u32, (e.dv >> t) as u32);
+        // du >= dv > 0, both below 2^23: a 32-bit division.
+        let (cols, rho) = udivmod(du.into(), dv.into());
+        let mut x = Self {
+            m,
+            col,
+            spill: 0,
+            down: false,
+            xi: (xi >> t) as u32,
+            d1: (N as u32).wrapping_mul(rho as u32),
+            ndv: (N as u32).wrapping_mul(dv),
+            d: mul_wide(du, dv) << Z_BITS,
+            cols: cols as i32,
+        };
+        x.evaluate();
+        x
+    }
+
+    /// The spill of the crossing at `xi`: `x² / D`, `x = xi` or
+    /// `N dv - xi` (whichever is at most `N dv / 2`).
+    #[inline(always)]
+    fn evaluate(&mut self) {
+        let rest = self.ndv - self.xi;
+        let left = self.xi <= rest;
+        let x = if left { self.xi } else { rest };
+        let (q, _) = udivmod(mul_wide(x, x), self.d);
+        self.spill = q as i32;
+        self.down = !left;
+    }
+
+    /// On to boundary `m + 1`: `xi + d1`, past `N dv` into the next column
+    /// (compared before adding: the sum may pass `2^32`).
+    #[inline(never)]
+    pub(crate) fn advance(&mut self) {
+        self.m += 1;
+        self.col += self.cols;
+        let room = self.ndv - self.d1;
+        if self.xi >= room {
+            self.xi -= room;
+            self.col += 1;
+        } else {
+            self.xi += self.d1;
+        }
+        self.evaluate();
+    }
+}
+
 #[cfg(test)]
 mod tests {
     extern crate std;
@@ -486,6 +568,8 @@ mod tests {
         let first = e.v0.div_euclid(n) + 1;
         let last = (e.v1 - 1).div_euclid(n);
         let mut c = k.at(e, first);
+        // The crossings stepped without the constants, from the first.
+        let mut x = Direct::at(e, first);
         for m in first..=last.min(first + 5000) {
             let (spill, col, left) = exact(e, m);
             assert_eq!(c.m, m);
@@ -496,6 +580,17 @@ mod tests {
             let d = k.at(e, m);
             assert!((d.xi, d.l, d.a, d.b) == (c.xi, c.l, c.a, c.b));
             c.advance(k);
+            // And so do the crossings stepped one at a time, started
+            // anywhere or from the first.
+            for y in [&x, &Direct::at(e, m)] {
+                assert_eq!((y.m, i64::from(y.col)), (m, col), "direct crossing {m}");
+                assert_eq!(
+                    (i64::from(y.spill), y.down),
+                    (spill, !left),
+                    "direct spill {m}"
+                );
+            }
+            x.advance();
         }
     }
 

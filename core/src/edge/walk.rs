@@ -13,9 +13,9 @@ use core::ops::Range;
 
 use super::area::clamped_area;
 use super::canon::{cell_of, Canon, Lv, H_BITS, N};
-use super::crossing::{Crossing, Tracker};
+use super::crossing::{Crossing, Direct, Tracker};
 use super::{AreaMode, CoverSink, DeltaSink, Forward};
-use crate::arith::{mul_wide, udivmod};
+use crate::arith::udivmod;
 use crate::{COVER_BITS, COVER_ONE};
 
 /// A whole pixel of coverage.
@@ -52,17 +52,10 @@ enum Next {
     At(Crossing),
     /// The same, for a [`Tracker::Narrow`] (`u32` remainders).
     AtN(Crossing<u32>),
-    /// One of the last few interior crossings, evaluated directly:
-    /// boundary `m` (the walk needs those before `end`), its column, its
-    /// spill (area units), and whether the line leaves the row there (the
-    /// crossing lies right of the column centre).
-    Direct {
-        m: i32,
-        end: i32,
-        col: i32,
-        t: i32,
-        down: bool,
-    },
+    /// The next of the few interior crossings a walk needs (the last few
+    /// of an edge, or a band's worth of one walked once), evaluated one
+    /// at a time ([`Direct`]): the walk needs those before boundary `end`.
+    Direct { x: Direct, end: i32 },
 }
 
 impl Next {
@@ -72,7 +65,7 @@ impl Next {
         match self {
             Next::At(c) => c.col,
             Next::AtN(c) => c.col,
-            Next::Direct { col, .. } => *col,
+            Next::Direct { x, .. } => x.col,
             Next::Done | Next::Unset => i32::MAX,
         }
     }
@@ -84,7 +77,7 @@ impl Next {
         match (self, cross) {
             (Next::At(c), Some(Tracker::Wide(k))) if c.col == a => Some(!c.is_left(k)),
             (Next::AtN(c), Some(Tracker::Narrow(k))) if c.col == a => Some(!c.is_left(k)),
-            (Next::Direct { col, down, .. }, _) if *col == a => Some(*down),
+            (Next::Direct { x, .. }, _) if x.col == a => Some(x.down),
             _ => None,
         }
     }
@@ -92,7 +85,7 @@ impl Next {
     /// The spill of the crossing in column `a` (see
     /// [`down_at`](Self::down_at)), and on to the next crossing.
     #[inline(always)]
-    fn take_spill(&mut self, e: &Canon, cross: &Option<Tracker>) -> i32 {
+    fn take_spill(&mut self, cross: &Option<Tracker>) -> i32 {
         match (&mut *self, cross) {
             (Next::At(c), Some(Tracker::Wide(k))) => {
                 let t = c.spill(k);
@@ -104,22 +97,21 @@ impl Next {
                 c.advance(k);
                 t
             }
-            (Next::Direct { t, .. }, _) => {
-                let t = *t;
-                self.pass_direct(e);
+            (Next::Direct { x, .. }, _) => {
+                let t = x.spill;
+                self.pass_direct();
                 t
             }
             _ => 0,
         }
     }
 
-    /// Past a directly evaluated crossing: on to the next one, evaluated
-    /// directly too, or done.
-    #[inline(never)]
-    fn pass_direct(&mut self, e: &Canon) {
-        if let Next::Direct { m, end, .. } = *self {
-            if m + 1 < end {
-                set_direct(self, e, m + 1, end);
+    /// Past a directly evaluated crossing: on to the next one, or done.
+    #[inline]
+    fn pass_direct(&mut self) {
+        if let Next::Direct { x, end } = self {
+            if x.m + 1 < *end {
+                x.advance();
             } else {
                 *self = Next::Done;
             }
@@ -127,38 +119,16 @@ impl Next {
     }
 }
 
-/// Most interior crossings an edge's walk evaluates directly, each with
-/// two divisions, instead of setting up the stepping (eight divisions,
-/// most of them 64-bit on the edges of more than a few pixels): short
-/// edges cross only a few boundaries (and a long one near its end). 4 and 5
-/// measure best on the Cortex-M0 benchmark's small triangles, and its
-/// medium and large ones no slower.
-const DIRECT: i32 = 4;
-
-/// The crossing of boundary `m` of `e` (`m < end`), evaluated directly (two
-/// divisions), written to `x_out` in place. `x = xi` or `N dv - xi` (below
-/// `2^32`), the spill `x² / D`: the same floor the stepped tracker keeps.
-/// Out of line: the walks' column loops keep their registers.
-#[inline(never)]
-fn set_direct(x_out: &mut Next, e: &Canon, m: i32, end: i32) {
-    let (col, xi) = e.crossing(m);
-    // Over the extents' common power of two taken out (the slope, hence
-    // the spill, is the same; `xi` is a multiple of it).
-    let t = (e.du | e.dv).trailing_zeros();
-    let (du, dv, xi) = (e.du >> t, e.dv >> t, xi >> t);
-    let ndv = u64::from(N as u32) * dv as u64;
-    let left = 2 * xi <= ndv;
-    let x = if left { xi } else { ndv - xi } as u32;
-    let d = mul_wide(du as u32, dv as u32) << crate::edge::crossing::Z_BITS;
-    let (t, _) = udivmod(mul_wide(x, x), d);
-    *x_out = Next::Direct {
-        m,
-        end,
-        col,
-        t: t as i32,
-        down: !left,
-    };
-}
+/// Most interior crossings a walk evaluates one at a time ([`Direct`]:
+/// three divisions for the first, one for each next) instead of setting
+/// up the stepping ([`Tracker`]: eight divisions and the `u64` products of
+/// its constants, then additions only): when the rest of the edge crosses
+/// at most this many boundaries, or the walk is dropped after its band
+/// and the band has at most this many rows left (an edge crosses at most
+/// one boundary a row). On the Cortex-M0 a crossing costs about 150
+/// instructions so and 70 stepped, the tracker's set-up about 1 800; 16
+/// measures best on the benchmark's triangles of all three sizes.
+const DIRECT: i32 = 16;
 
 /// Where a walk stopped, so that the next band's walk resumes there
 /// instead of starting over with divisions.
@@ -291,14 +261,14 @@ impl EdgeWalk {
 
     /// Marks the walk as one that is walked for one band only and then
     /// dropped (no cache keeps it). When the walk's tracker is set up with
-    /// at most about [`DIRECT`] rows of the band left (an edge crosses at
-    /// most one boundary a row: a row boundary for an x-major edge, a
-    /// column boundary for a y-major one, `dv <= du`), the crossings are
-    /// evaluated directly, one at a time as the walk reaches them, rather
-    /// than by setting up the stepping for the rest of the edge: the walk
-    /// will not need the rest. The same spills either way (both are the
-    /// exact floor); on the Cortex-M0 the 3-row screen without a cache
-    /// costs 19.0 M instead of 21.0 M.
+    /// at most [`DIRECT`] rows of the band left (an edge crosses at most
+    /// one boundary a row: a row boundary for an x-major edge, a column
+    /// boundary for a y-major one, `dv <= du`), the crossings are evaluated
+    /// one at a time as the walk reaches them ([`Direct`]), rather than by
+    /// setting up the stepping for the rest of the edge: the walk will not
+    /// need the rest. The same spills either way (both are the exact
+    /// floor); on the Cortex-M0 the benchmark's frame of 2 000 medium
+    /// triangles in 16-row bands costs 166.1 M instead of 170.8 M.
     #[inline(always)]
     pub(crate) fn once(&mut self) {
         self.once = true;
@@ -494,9 +464,9 @@ impl Geom {
     /// The crossing tracker at interior column `a`: the first crossing at
     /// or after it, if one comes before the edge's last column (set-up on
     /// first use: the constants, then the state, eight divisions in all;
-    /// two per crossing when at most [`DIRECT`] are left, evaluated one at
-    /// a time; none when the rest of the edge crosses no boundary inside).
-    /// Written to `x` in place (a tracker is a few dozen words).
+    /// when at most [`DIRECT`] are left, evaluated one at a time instead,
+    /// [`Direct`]; none when the rest of the edge crosses no boundary
+    /// inside). Written to `x` in place (a tracker is a few dozen words).
     /// `few`: the walk needs at most [`DIRECT`] more crossings, however
     /// many the edge has left (it is dropped after this band).
     fn track(&self, cross: &mut Option<Tracker>, x: &mut Next, a: i32, few: bool) {
@@ -524,7 +494,10 @@ impl Geom {
         if end - m <= DIRECT || few {
             // A few crossings left: evaluated directly, no stepping
             // constants.
-            set_direct(x, &self.e, m, end);
+            *x = Next::Direct {
+                x: Direct::at(&self.e, m),
+                end,
+            };
             return;
         }
         if cross.is_none() {
@@ -552,8 +525,8 @@ impl Geom {
                 }
             }
             (Next::Direct { .. }, _) => {
-                while matches!(*x, Next::Direct { col, .. } if col <= a) {
-                    x.pass_direct(&self.e);
+                while matches!(x, Next::Direct { x, .. } if x.col <= a) {
+                    x.pass_direct();
                 }
             }
             _ => {}
@@ -862,7 +835,7 @@ impl EdgeWalk {
             if let Next::Unset = x {
                 // Dropped after this band: its crossings are those of
                 // boundaries up to y1, one per row at most.
-                let few = self.once && y1 - s.b < DIRECT;
+                let few = self.once && y1 - s.b <= DIRECT;
                 g.track(&mut self.cross, &mut x, a, few);
             }
             let (here, down) = match x.down_at(a, &self.cross) {
@@ -906,7 +879,7 @@ impl EdgeWalk {
             if here {
                 // The spill: taken from the cell above the boundary, given
                 // to the one below.
-                let t = x.take_spill(&g.e, &self.cross);
+                let t = x.take_spill(&self.cross);
                 if down {
                     // Boundary bc + 1.
                     mid0 -= t;
@@ -997,7 +970,7 @@ impl EdgeWalk {
             let bc = s.b;
             match x.down_at(a, &self.cross) {
                 Some(down) => {
-                    let t = x.take_spill(&g.e, &self.cross);
+                    let t = x.take_spill(&self.cross);
                     if !down {
                         // m = bc: (m - 1, -t), (m, S + t).
                         out.put_n(
