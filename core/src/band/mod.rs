@@ -593,6 +593,27 @@ impl BandDeltas<'_> {
         (k < self.n).then(|| row_start(self.r_first + k as usize, self.w as usize))
     }
 
+    /// [`put_n`](crate::edge::DeltaSink::put_n)'s changes at a band's
+    /// sides, one at a time from band column `c` (left of the band: at its
+    /// first column; right of it: dropped). Out of line: rare.
+    #[inline(never)]
+    fn put_n_clipped<const K: usize>(&mut self, start: usize, c: i32, step: i32, d: [i32; K]) {
+        let (mut lo, mut hi) = (i32::MAX, i32::MIN);
+        let mut c = c;
+        for v in d {
+            let k = c.max(0);
+            if k < self.w {
+                if let Some(e) = self.cover.get_mut(start + ROW_HEAD + k as usize) {
+                    *e = e.wrapping_add(v);
+                }
+                lo = lo.min(k);
+                hi = hi.max(k);
+            }
+            c = c.saturating_add(step);
+        }
+        self.widen(start, lo, hi);
+    }
+
     /// Widens row `start`'s extent of changes to columns `lo..=hi`.
     #[inline]
     fn widen(&mut self, start: usize, lo: i32, hi: i32) {
@@ -684,7 +705,7 @@ impl crate::edge::DeltaSink for BandDeltas<'_> {
         self.widen(start, lo, hi.min(self.w - 1));
     }
 
-    #[inline]
+    #[inline(always)]
     fn put_n<const K: usize>(&mut self, x: i32, y: i32, step: i32, d: [i32; K]) {
         let Some(start) = self.row(y) else {
             return;
@@ -715,20 +736,7 @@ impl crate::edge::DeltaSink for BandDeltas<'_> {
                 }
             }
         }
-        let (mut lo, mut hi) = (i32::MAX, i32::MIN);
-        let mut c = c;
-        for v in d {
-            let k = c.max(0);
-            if k < self.w {
-                if let Some(e) = self.cover.get_mut(start + ROW_HEAD + k as usize) {
-                    *e = e.wrapping_add(v);
-                }
-                lo = lo.min(k);
-                hi = hi.max(k);
-            }
-            c = c.saturating_add(step);
-        }
-        self.widen(start, lo, hi);
+        self.put_n_clipped(start, c, step, d);
     }
 
     #[inline]

@@ -383,7 +383,12 @@ pub(crate) fn walk_edge<const C: usize>(
         ref rows,
     } = *shape;
     let rows = rows.clone();
-    if mode == AreaMode::Exact && p0.x == p1.x && p0.y != p1.y {
+    if p0.y == p1.y {
+        // A horizontal edge cuts off no area in the row-wise model (no
+        // walk: `Canon::new` gives none), so it has no entry to look for.
+        return;
+    }
+    if mode == AreaMode::Exact && p0.x == p1.x {
         // A vertical edge needs no set-up and no state: walked row by
         // row, never kept.
         crate::edge::walk_vertical(p0, p1, rows, out);
