@@ -268,7 +268,8 @@ impl EdgeWalk {
     /// setting up the stepping for the rest of the edge: the walk will not
     /// need the rest. The same spills either way (both are the exact
     /// floor); on the Cortex-M0 the benchmark's frame of 2 000 medium
-    /// triangles in 16-row bands costs 166.1 M instead of 170.8 M.
+    /// triangles in 16-row bands cost 166.1 M instead of 170.8 M when this
+    /// came in.
     #[inline(always)]
     pub(crate) fn once(&mut self) {
         self.once = true;
