@@ -563,6 +563,14 @@ impl<const C: usize> BandBuffer<'_, C> {
     /// The scratch rows `rows` (clipped to the band) for an edge walk.
     pub(crate) fn deltas(&mut self, rows: core::ops::Range<i32>) -> BandDeltas<'_> {
         let r = self.rows_in_band(rows.start, rows.end);
+        self.deltas_within(r)
+    }
+
+    /// [`deltas`](Self::deltas) of rows already within the band (a
+    /// triangle's rows in it: not clipped again; rows outside would give
+    /// a sink whose rows miss the scratch, which writes nothing).
+    #[inline]
+    pub(crate) fn deltas_within(&mut self, r: core::ops::Range<i32>) -> BandDeltas<'_> {
         BandDeltas {
             cover: &mut *self.cover,
             w: i32::from(self.band.width),

@@ -237,6 +237,7 @@ impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
         let reach = self.reach;
         let (y_lo, y_hi) = self.triangle_reach();
         let (start, entries) = list.window(y_lo, y_hi);
+        let at = self.triangle_band();
         for (i, t) in (start..).zip(entries) {
             let rows = [i32::from(t.rows[0]), i32::from(t.rows[1])];
             if rows[1] < y_lo || rows[0] >= y_hi {
@@ -248,7 +249,7 @@ impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
             let serial = base.wrapping_add(i as u32);
             if t.flat {
                 let paint = Paint::Flat(t.colors[0]);
-                self.fill_oriented_here(serial, 0, &t.o, rows, &paint, t.op);
+                self.fill_oriented_here(&at, serial, 0, &t.o, rows, &paint, t.op);
             } else {
                 let [p, q, r] = t.o;
                 let v = if t.flip { [p, r, q] } else { t.o };

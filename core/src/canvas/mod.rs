@@ -231,6 +231,14 @@ impl Reach {
     }
 }
 
+/// A band as the triangles drawn into it see it
+/// ([`Canvas::triangle_band`]).
+pub(super) struct TriangleBand {
+    kind: WalkKind,
+    rows: Range<i32>,
+    cols: Range<i32>,
+}
+
 /// Which walk an edge takes under a style.
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum WalkKind {
@@ -783,14 +791,31 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         paint: &Paint<'_, C>,
         op: ComposeOp,
     ) {
-        self.fill_oriented_here(serial, first, o, rows, paint, op);
+        let at = self.triangle_band();
+        self.fill_oriented_here(&at, serial, first, o, rows, paint, op);
+    }
+
+    /// What every triangle drawn into this band needs of it, found once
+    /// by a caller that draws many (a list's): the walk, the band's rows
+    /// and columns.
+    #[inline(always)]
+    pub(super) fn triangle_band(&self) -> TriangleBand {
+        let band = self.buf.band();
+        TriangleBand {
+            kind: WalkKind::of(self.style),
+            rows: band.row_range(),
+            cols: band.column_range(),
+        }
     }
 
     /// [`fill_oriented`](Self::fill_oriented), inlined into a caller that
-    /// draws many triangles (a list's flat ones).
+    /// draws many triangles (a list's flat ones), with the band's part
+    /// found once (`at`, [`triangle_band`](Self::triangle_band)).
+    #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     pub(super) fn fill_oriented_here(
         &mut self,
+        at: &TriangleBand,
         serial: u32,
         first: u32,
         o: &[FinePoint; 3],
@@ -798,24 +823,24 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         paint: &Paint<'_, C>,
         op: ComposeOp,
     ) {
-        let WalkKind::Box(mode) = WalkKind::of(self.style) else {
+        let WalkKind::Box(mode) = at.kind else {
             let b = triangle_box(o);
             self.fill_box(serial, first, o, b, Coverage::Signed(1), paint, op);
             return;
         };
-        let band = self.buf.band();
-        let rows = y_first.max(band.y0)..(y_last + 1).min(band.y0 + i32::from(band.rows));
+        let rows = y_first.max(at.rows.start)..(y_last + 1).min(at.rows.end);
         if rows.start >= rows.end {
             return;
         }
         let buf = &mut *self.buf;
         let mut cache = self.cache.as_mut();
-        // The three walks write the same rows of the scratch.
-        let mut out = buf.deltas(rows.clone());
+        // The three walks write the same rows of the scratch (the band's
+        // part of the triangle's rows, clipped above).
+        let mut out = buf.deltas_within(rows.clone());
         let shape = ShapeBand {
             serial,
             mode,
-            cols: band.column_range(),
+            cols: at.cols.clone(),
             rows,
         };
         let rows = &shape.rows;
