@@ -68,6 +68,12 @@
 //! points those of up to 512 px) the remainders are `u32`, and a step is 32-bit
 //! additions and compares only (on the Cortex-M0 about half the
 //! instructions of the `u64` ones).
+//!
+//! A walk that needs only a few crossings (the last few of an edge, or a
+//! band's worth of one that is dropped after its band) takes them one at a
+//! time instead ([`Direct`]): `xi` stepped as above (`d1`, one column more
+//! past `N dv`), the spill `x² / D` divided out at each, no constants set
+//! up. The same floors.
 
 use super::canon::{Canon, N};
 use crate::arith::{mul_wide, udivmod};
