@@ -303,6 +303,7 @@ pub fn render<const C: usize>(
 /// Draws a z-buffer scene's depth triangles into the band, pass by pass
 /// (the passes and order of `softedge::hsr::draw_zbuffer`, without a
 /// triangle store: the shapes are read again in each pass).
+#[inline(never)]
 fn draw_zbuffer<const C: usize>(
     scene: &Scene,
     buf: &mut BandBuffer<'_, C>,
@@ -340,6 +341,7 @@ fn channels<const C: usize>(c: [u16; 3]) -> [u16; C] {
     out
 }
 
+#[inline(never)]
 fn draw<const C: usize>(
     shape: &Shape,
     buf: &mut BandBuffer<'_, C>,
@@ -371,6 +373,7 @@ fn draw<const C: usize>(
 
 /// Builds, lights and projects a 3D object, drawing its front faces into
 /// the band (back-face culling only: use convex objects).
+#[inline(never)]
 fn draw_object<const C: usize>(
     o: &Object3d,
     scene: &Scene,
