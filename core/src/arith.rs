@@ -55,6 +55,31 @@ pub(crate) fn udivmod(n: u64, d: u64) -> (u64, u64) {
     }
 }
 
+/// `floor((2^32 - 1) / d)` for `d > 0` (0 for `d == 0`): the inverse
+/// [`div_by_inverse`] divides by, one division to set it up.
+#[inline]
+pub(crate) fn inverse(d: u32) -> u32 {
+    u32::MAX.checked_div(d).unwrap_or(0)
+}
+
+/// `floor(n / d)` for `d > 0`, with `inv = inverse(d)`: a product and one
+/// correction instead of a division (on the Cortex-M0 a library call of
+/// about a hundred instructions, here some twenty). Exact for every
+/// `n < 2^32`: `2^32 - d <= inv d < 2^32`, so `q' = floor(n inv / 2^32)`
+/// lies in `(n / d - n / 2^32 - 1, n / d]`, that is, `q'` is `q` or
+/// `q - 1`, and the remainder `n - q' d` (below `2 d`) tells which.
+#[inline(always)]
+pub(crate) fn div_by_inverse(n: u32, d: u32, inv: u32) -> u32 {
+    let q = (mul_wide(n, inv) >> 32) as u32;
+    // q d <= n: the product and the difference do not wrap.
+    let r = n.wrapping_sub(q.wrapping_mul(d));
+    if r >= d {
+        q + 1
+    } else {
+        q
+    }
+}
+
 /// `a * b` in full, `u32 x u32 -> u64`, from four 16-bit products: the
 /// Cortex-M0's multiply keeps the low 32 bits only, and a 64-bit product is
 /// a library call several times longer.
@@ -115,6 +140,7 @@ pub(crate) fn limit(v: i64, lo: i64, hi: i64) -> i64 {
 
 #[cfg(test)]
 mod tests {
+    extern crate std;
     use super::*;
 
     #[test]
@@ -143,6 +169,41 @@ mod tests {
             }
         }
         assert_eq!(udivmod(5, 0), (0, 0));
+    }
+
+    #[test]
+    fn division_by_the_inverse_is_exact_for_every_u32_numerator() {
+        // The divisors at the ends of the range and near powers of two,
+        // each with the numerators where an error would show first (the
+        // multiples of `d` and their neighbours, the top of the range),
+        // then random pairs.
+        let mut divisors = std::vec![1u32, 2, 3, 5, 7, 255, 256, 257, u32::MAX, u32::MAX - 1];
+        for k in 1..32 {
+            divisors.extend([(1u32 << k) - 1, 1 << k, (1 << k) + 1]);
+        }
+        for &d in &divisors {
+            let inv = inverse(d);
+            let mut ns = std::vec![0u32, 1, u32::MAX, u32::MAX - 1, d - 1, d, d.wrapping_add(1)];
+            for q in [1u32, 2, 3, 1000, u32::MAX / d, u32::MAX / d - 1] {
+                let m = q.wrapping_mul(d);
+                if u64::from(q) * u64::from(d) <= u64::from(u32::MAX) {
+                    ns.extend([m, m.wrapping_sub(1), m.saturating_add(1)]);
+                }
+            }
+            for n in ns {
+                assert_eq!(div_by_inverse(n, d, inv), n / d, "{n} / {d}");
+            }
+        }
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        for _ in 0..200_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let n = x as u32;
+            let d = (((x >> 32) as u32) >> (x % 31)).max(1);
+            assert_eq!(div_by_inverse(n, d, inverse(d)), n / d, "{n} / {d}");
+        }
+        assert_eq!(inverse(0), 0);
     }
 
     #[test]

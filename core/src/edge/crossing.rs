@@ -76,7 +76,7 @@
 //! up. The same floors.
 
 use super::canon::{Canon, N};
-use crate::arith::{mul_wide, udivmod};
+use crate::arith::{div_by_inverse, inverse, mul_wide, udivmod};
 use crate::geom::FINE_BITS;
 use crate::COVER_BITS as AREA_BITS;
 
@@ -445,6 +445,10 @@ pub(crate) struct Direct {
     ndv: u32,
     d: u64,
     cols: i32,
+    /// `inverse(D)` once a stepped crossing has needed it (0 before, and
+    /// for `D >= 2^32`): the spills of the crossings after the first are
+    /// divided out by it, a product and a correction each.
+    inv: u32,
 }
 
 impl Direct {
@@ -466,21 +470,44 @@ impl Direct {
             ndv: (N as u32).wrapping_mul(dv),
             d: mul_wide(du, dv) << Z_BITS,
             cols: cols as i32,
+            inv: 0,
         };
-        x.evaluate();
+        let near = x.near();
+        x.spill = udivmod(mul_wide(near, near), x.d).0 as i32;
         x
     }
 
-    /// The spill of the crossing at `xi`: `x² / D`, `x = xi` or
-    /// `N dv - xi` (whichever is at most `N dv / 2`).
+    /// `x` for the crossing at `xi`: `xi` or `N dv - xi`, whichever is at
+    /// most `N dv / 2`; sets `down` (the second: the crossing lies right
+    /// of the column centre).
     #[inline(always)]
-    fn evaluate(&mut self) {
+    fn near(&mut self) -> u32 {
         let rest = self.ndv - self.xi;
         let left = self.xi <= rest;
-        let x = if left { self.xi } else { rest };
-        let (q, _) = udivmod(mul_wide(x, x), self.d);
-        self.spill = q as i32;
         self.down = !left;
+        if left {
+            self.xi
+        } else {
+            rest
+        }
+    }
+
+    /// The spill of a stepped crossing, `x² / D`: where both fit 32 bits
+    /// (`x < 2^16`), one 32-bit product and a division by `D`'s inverse
+    /// (made at the first stepped crossing: a walk of one crossing does
+    /// not pay for it), else the 64-bit product divided.
+    #[inline(always)]
+    fn evaluate(&mut self) {
+        let x = self.near();
+        self.spill = match u32::try_from(self.d) {
+            Ok(d) if x < 1 << 16 => {
+                if self.inv == 0 {
+                    self.inv = inverse(d);
+                }
+                div_by_inverse(x * x, d, self.inv) as i32
+            }
+            _ => udivmod(mul_wide(x, x), self.d).0 as i32,
+        };
     }
 
     /// On to boundary `m + 1`: `xi + d1`, past `N dv` into the next column
@@ -598,6 +625,53 @@ mod tests {
             }
             x.advance();
         }
+    }
+
+    #[test]
+    fn direct_crossings_agree_with_the_definition_on_random_edges() {
+        // Random x-major edges whose reduced `D` lies on either side of
+        // 2^32 and whose `x` reaches either side of 2^16: the spill by the
+        // inverse, by the 64-bit division, and the switch between them,
+        // each crossing against the definition, stepped from the first.
+        let mut rng = crate::path::testing::Lcg(0xd12e_c7ed);
+        let (mut fast, mut wide) = (0, 0);
+        for _ in 0..3000 {
+            let bits = 8 + rng.below(15);
+            let du = 1 + rng.below(1 << bits) as i32;
+            let dv = 1 + rng.below(du as u64) as i32;
+            let u0 = rng.below(1 << 21) as i32 - (1 << 20);
+            let v0 = rng.below(1 << 21) as i32 - (1 << 20);
+            let Some(e) = Canon::new(FinePoint::new(u0, v0), FinePoint::new(u0 + du, v0 + dv))
+            else {
+                continue;
+            };
+            let n = 1i32 << FINE_BITS;
+            let first = e.v0.div_euclid(n) + 1;
+            let last = (e.v1 - 1).div_euclid(n);
+            if first > last {
+                continue;
+            }
+            let mut x = Direct::at(&e, first);
+            for m in first..=last.min(first + 300) {
+                let (spill, col, left) = exact(&e, m);
+                assert_eq!((x.m, i64::from(x.col)), (m, col), "{e:?} crossing {m}");
+                assert_eq!(
+                    (i64::from(x.spill), x.down),
+                    (spill, !left),
+                    "{e:?} spill {m}"
+                );
+                x.advance();
+            }
+            if x.inv != 0 {
+                fast += 1;
+            } else if x.d > u64::from(u32::MAX) {
+                wide += 1;
+            }
+        }
+        assert!(
+            fast > 200 && wide > 200,
+            "{fast} edges by the inverse, {wide} in 64 bits"
+        );
     }
 
     #[test]
