@@ -55,6 +55,29 @@ pub(crate) fn udivmod(n: u64, d: u64) -> (u64, u64) {
     }
 }
 
+/// `(n / d, n % d)` for `d > 0` (`(0, 0)` for `d == 0`), for quotients
+/// that are mostly small: below 3 by comparisons and subtractions, else
+/// divided (on the Cortex-M0 a library call of about a hundred
+/// instructions whatever the quotient).
+#[inline]
+pub(crate) fn divmod_small(n: u32, d: u32) -> (u32, u32) {
+    if n < d {
+        return (0, n);
+    }
+    let r = n - d;
+    if r < d {
+        return (1, r);
+    }
+    let r = r - d;
+    if r < d {
+        return (2, r);
+    }
+    match (n.checked_div(d), n.checked_rem(d)) {
+        (Some(q), Some(r)) => (q, r),
+        _ => (0, 0),
+    }
+}
+
 /// `floor((2^32 - 1) / d)` for `d > 0` (0 for `d == 0`): the inverse
 /// [`div_by_inverse`] divides by, one division to set it up.
 #[inline]
@@ -169,6 +192,21 @@ mod tests {
             }
         }
         assert_eq!(udivmod(5, 0), (0, 0));
+    }
+
+    #[test]
+    fn small_quotients_by_subtraction_agree_with_division() {
+        for d in [1u32, 2, 3, 7, 1000, 1 << 22, u32::MAX / 2, u32::MAX / 3, u32::MAX] {
+            for k in [0u32, 1, 2, 3, 4, 1000] {
+                for e in [0u32, 1, d / 2, d - 1] {
+                    let Some(n) = d.checked_mul(k).and_then(|m| m.checked_add(e)) else {
+                        continue;
+                    };
+                    assert_eq!(divmod_small(n, d), (n / d, n % d), "{n} / {d}");
+                }
+            }
+        }
+        assert_eq!(divmod_small(5, 0), (0, 0));
     }
 
     #[test]

@@ -76,7 +76,7 @@
 //! up. The same floors.
 
 use super::canon::{Canon, N};
-use crate::arith::{div_by_inverse, inverse, mul_wide, udivmod};
+use crate::arith::{div_by_inverse, divmod_small, inverse, mul_wide, udivmod};
 use crate::geom::FINE_BITS;
 use crate::COVER_BITS as AREA_BITS;
 
@@ -319,7 +319,8 @@ impl Crossings {
         let t = (du | dv).trailing_zeros();
         let (du, dv) = (du >> t, dv >> t);
         let (udu, udv) = (du as u64, dv as u64);
-        let (cols, rho) = udivmod(udu, udv);
+        let (cols, rho) = divmod_small(du as u32, dv as u32);
+        let (cols, rho) = (u64::from(cols), u64::from(rho));
         let dudv = mul_wide(du as u32, dv as u32);
         let d = dudv << Z_BITS;
         // c1 = d1² / D = N² rho² / (Z du dv): numerator < 2^(15 + 44).
@@ -458,8 +459,9 @@ impl Direct {
         let (col, xi) = e.crossing(m);
         let t = (e.du | e.dv).trailing_zeros();
         let (du, dv) = ((e.du >> t) as u32, (e.dv >> t) as u32);
-        // du >= dv > 0, both below 2^23: a 32-bit division.
-        let (cols, rho) = udivmod(du.into(), dv.into());
+        // du >= dv > 0, both below 2^23: a column step below 3 (slopes
+        // over a third) without a division.
+        let (cols, rho) = divmod_small(du, dv);
         let mut x = Self {
             m,
             col,
@@ -472,8 +474,9 @@ impl Direct {
             cols: cols as i32,
             inv: 0,
         };
-        let near = x.near();
-        x.spill = udivmod(mul_wide(near, near), x.d).0 as i32;
+        // The inverse is made here: nine walks in ten step on to a next
+        // crossing, which needs it.
+        x.evaluate();
         x
     }
 
@@ -492,10 +495,10 @@ impl Direct {
         }
     }
 
-    /// The spill of a stepped crossing, `x² / D`: where both fit 32 bits
+    /// The spill of the crossing, `x² / D`: where both fit 32 bits
     /// (`x < 2^16`), one 32-bit product and a division by `D`'s inverse
-    /// (made at the first stepped crossing: a walk of one crossing does
-    /// not pay for it), else the 64-bit product divided.
+    /// (made at the first crossing that needs it), else the 64-bit product
+    /// divided.
     #[inline(always)]
     fn evaluate(&mut self) {
         let x = self.near();
