@@ -515,7 +515,7 @@ impl Direct {
 
     /// On to boundary `m + 1`: `xi + d1`, past `N dv` into the next column
     /// (compared before adding: the sum may pass `2^32`).
-    #[inline(never)]
+    #[inline]
     pub(crate) fn advance(&mut self) {
         self.m += 1;
         self.col += self.cols;
