@@ -196,7 +196,17 @@ mod tests {
 
     #[test]
     fn small_quotients_by_subtraction_agree_with_division() {
-        for d in [1u32, 2, 3, 7, 1000, 1 << 22, u32::MAX / 2, u32::MAX / 3, u32::MAX] {
+        for d in [
+            1u32,
+            2,
+            3,
+            7,
+            1000,
+            1 << 22,
+            u32::MAX / 2,
+            u32::MAX / 3,
+            u32::MAX,
+        ] {
             for k in [0u32, 1, 2, 3, 4, 1000] {
                 for e in [0u32, 1, d / 2, d - 1] {
                     let Some(n) = d.checked_mul(k).and_then(|m| m.checked_add(e)) else {

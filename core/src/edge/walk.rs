@@ -120,15 +120,19 @@ impl Next {
 }
 
 /// Most interior crossings a walk evaluates one at a time ([`Direct`]:
-/// three divisions for the first, one for each next) instead of setting
-/// up the stepping ([`Tracker`]: eight divisions and the `u64` products of
-/// its constants, then additions only): when the rest of the edge crosses
-/// at most this many boundaries, or the walk is dropped after its band
-/// and the band has at most this many rows left (an edge crosses at most
-/// one boundary a row). On the Cortex-M0 a crossing costs about 150
-/// instructions so and 70 stepped, the tracker's set-up about 1 800; 16
-/// measures best on the benchmark's triangles of all three sizes.
-const DIRECT: i32 = 16;
+/// three divisions and an inverse for the first, a product by the
+/// inverse for each next) instead of setting up the stepping
+/// ([`Tracker`]: eight divisions and the `u64` products of its constants,
+/// then additions only): when the rest of the edge crosses at most this
+/// many boundaries, or the walk is dropped after its band and the band has
+/// at most this many rows left (an edge crosses at most one boundary a
+/// row). On the Cortex-M0 a crossing costs about 75 instructions so and
+/// 70 stepped, the tracker's set-up about 1 800: the tracker pays only for
+/// long edges (and those whose spill's denominator passes `2^32`, where
+/// each direct spill is a 64-bit division). 128 measures best on the
+/// benchmark's triangles of all three sizes (16 did while a direct
+/// crossing was a division; 64 and 4 096 within 0.1 %).
+const DIRECT: i32 = 128;
 
 /// Where a walk stopped, so that the next band's walk resumes there
 /// instead of starting over with divisions.
