@@ -260,8 +260,10 @@ proptest! {
     /// once, 200 000 random inputs: 14 differ, by 2 to 5 codes, all at codes
     /// <= 13, i.e. under 0.1 % of white in light). The test then checks the
     /// difference is just that quantization: fig. 7b is within one code
-    /// of the exact f64 result, and fig. 7a is the code of a linear level
-    /// within one level of the exact linear value.
+    /// of the exact f64 result (or, nearer black than its own first step,
+    /// the code of a log value within one fine unit of the exact one), and
+    /// fig. 7a is the code of a linear level within one level of the exact
+    /// linear value.
     #[test]
     fn fig7a_and_fig7b_agree_within_one_display_code_gamma_2_4_or_7a_is_12_bit_quantized(
         (codes, covers) in filter_inputs()
@@ -275,7 +277,25 @@ proptest! {
                 .map(|(&c, &w)| f64::from(w) / 4096.0 * (100f64.powf(f64::from(c) / 255.0) - 1.0) / 99.0)
                 .sum();
             let exact = (255.0 * x.powf(1.0 / 2.4)).round();
-            prop_assert!((f64::from(b) - exact).abs() <= 1.0, "7b {} vs exact {}", b, exact);
+            // Fig. 7b keeps the light as a log value in fine units of
+            // 1 / (8 m) of the scale: one unit above black is x =
+            // (K^(1/2040) - 1) / 99 = 2.3e-5 of white, display code 3 under
+            // γ = 2.4. So near black it may be off the exact code by more
+            // than one too (found by this test: codes [0, 9], covers
+            // [4092, 4], x = 1.7e-6, exact code 1, 7b 3): the difference is
+            // then its own quantization, the code of a log value within
+            // one fine unit of the exact one.
+            let fine = 8.0 * 255.0 * (1.0 + 99.0 * x).ln() / 100f64.ln();
+            let within = (fine.floor() as i32 - 1..=fine.ceil() as i32 + 1)
+                .filter(|&f| (f64::from(f) - fine).abs() <= 1.0)
+                .any(|f| OUT_24.code(LogValue::from_fine(f.max(0))) == b);
+            prop_assert!(
+                (f64::from(b) - exact).abs() <= 1.0 || within,
+                "7b {} vs exact {} (log {} fine units)",
+                b,
+                exact,
+                fine
+            );
             let lin = 4095.0 * x;
             let explained = (0..=4095u16)
                 .filter(|&l| (f64::from(l) - lin).abs() <= 1.0)
