@@ -468,7 +468,7 @@ impl Direct {
             spill: 0,
             down: false,
             xi: (xi >> t) as u32,
-            d1: (N as u32).wrapping_mul(rho as u32),
+            d1: (N as u32).wrapping_mul(rho),
             ndv: (N as u32).wrapping_mul(dv),
             d: mul_wide(du, dv) << Z_BITS,
             cols: cols as i32,
