@@ -303,6 +303,9 @@ pub fn render<const C: usize>(
 /// Draws a z-buffer scene's depth triangles into the band, pass by pass
 /// (the passes and order of `softedge::hsr::draw_zbuffer`, without a
 /// triangle store: the shapes are read again in each pass).
+// This, `draw` and `draw_object` are out of line: inlined into `render`,
+// their locals shared one 4.3 KB frame, and the Cortex-M0 check's stack
+// (16 KiB micro:bit) came within 472 bytes of the statics.
 #[inline(never)]
 fn draw_zbuffer<const C: usize>(
     scene: &Scene,

@@ -69,11 +69,13 @@
 //! additions and compares only (on the Cortex-M0 about half the
 //! instructions of the `u64` ones).
 //!
-//! A walk that needs only a few crossings (the last few of an edge, or a
-//! band's worth of one that is dropped after its band) takes them one at a
-//! time instead ([`Direct`]): `xi` stepped as above (`d1`, one column more
-//! past `N dv`), the spill `x² / D` divided out at each, no constants set
-//! up. The same floors.
+//! A walk that needs fewer crossings (up to the walk's `DIRECT` of them:
+//! the rest of a shorter edge, or a band's worth of one that is dropped
+//! after its band) takes them one at a time instead ([`Direct`]): `xi`
+//! stepped as above (`d1`, one column more past `N dv`), the spill `x² /
+//! D` at each a product by `D`'s inverse and one correction
+//! ([`div_by_inverse`], where `x² < 2^32` and `D < 2^32`, else a
+//! division), no constants set up. The same floors.
 
 use super::canon::{Canon, N};
 use crate::arith::{div_by_inverse, divmod_small, inverse, mul_wide, udivmod};
@@ -420,12 +422,13 @@ impl<R: Rem> Crossing<R> {
 }
 
 /// A walk's crossings one at a time, without the stepping constants of
-/// [`Crossings`]: the first evaluated directly (two divisions), each next
-/// one stepped from it (`xi += d1`, one column more when that passes
-/// `N dv`) and its spill divided out (one division). Cheaper than the
-/// tracker's set-up (eight divisions and the `u64` products of its
-/// constants) for a walk that needs a band's worth of crossings and is
-/// then dropped; the same floors (both are `x² / D` exactly).
+/// [`Crossings`]: the first found directly (two divisions, and `D`'s
+/// inverse), each next one stepped from it (`xi += d1`, one column more
+/// when that passes `N dv`); each spill `x² / D` is a product by the
+/// inverse and a correction. Cheaper than the tracker's set-up (eight
+/// divisions and the `u64` products of its constants) for a walk that
+/// needs up to some hundred crossings, about as cheap a crossing; the
+/// same floors (both are `x² / D` exactly).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Direct {
     /// Boundary index and the canonical column holding its crossing.
@@ -446,9 +449,8 @@ pub(crate) struct Direct {
     ndv: u32,
     d: u64,
     cols: i32,
-    /// `inverse(D)` once a stepped crossing has needed it (0 before, and
-    /// for `D >= 2^32`): the spills of the crossings after the first are
-    /// divided out by it, a product and a correction each.
+    /// `inverse(D)`, made at the first crossing whose spill takes it (0
+    /// before; and for good when `D >= 2^32`, whose spills are divided).
     inv: u32,
 }
 
