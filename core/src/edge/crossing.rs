@@ -601,10 +601,15 @@ mod tests {
         assert_eq!(narrowed, 10, "the cases narrow as planned");
     }
 
-    fn check_every_crossing<R: Rem + PartialEq>(e: &Canon, k: &Crossings<R>) {
+    /// The first and last minor boundaries strictly inside `e` (none when
+    /// `first > last`).
+    fn inner_boundaries(e: &Canon) -> (i32, i32) {
         let n = 1i32 << FINE_BITS;
-        let first = e.v0.div_euclid(n) + 1;
-        let last = (e.v1 - 1).div_euclid(n);
+        (e.v0.div_euclid(n) + 1, (e.v1 - 1).div_euclid(n))
+    }
+
+    fn check_every_crossing<R: Rem + PartialEq>(e: &Canon, k: &Crossings<R>) {
+        let (first, last) = inner_boundaries(e);
         let mut c = k.at(e, first);
         // The crossings stepped without the constants, from the first.
         let mut x = Direct::at(e, first);
@@ -650,9 +655,7 @@ mod tests {
             else {
                 continue;
             };
-            let n = 1i32 << FINE_BITS;
-            let first = e.v0.div_euclid(n) + 1;
-            let last = (e.v1 - 1).div_euclid(n);
+            let (first, last) = inner_boundaries(&e);
             if first > last {
                 continue;
             }
