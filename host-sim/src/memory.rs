@@ -11,7 +11,8 @@ pub struct BandMemory {
     pub rows: u16,
     /// The accumulator: one `i32` per channel per pixel.
     pub acc: usize,
-    /// The cover scratch: one `i32` per pixel plus four per row.
+    /// The cover scratch: one `i32` per pixel plus four per row, and the
+    /// pixels' tags, a byte each (whole words per row).
     pub cover: usize,
     /// The z-buffer's depths: one `u16` per pixel.
     pub depth: usize,
@@ -114,10 +115,10 @@ mod tests {
         let m = band_memory(240, 3, 16);
         assert_eq!(
             (m.acc, m.cover, m.depth, m.covered),
-            (46_080, 15_616, 7_680, 15_360)
+            (46_080, 19_456, 7_680, 15_360)
         );
-        assert_eq!(m.zbuffer(), 84_736);
+        assert_eq!(m.zbuffer(), 88_576);
         let one = band_memory(240, 3, 1);
-        assert_eq!(one.zbuffer(), 2_880 + 976 + 480 + 960);
+        assert_eq!(one.zbuffer(), 2_880 + 1_216 + 480 + 960);
     }
 }

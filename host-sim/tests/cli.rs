@@ -51,16 +51,17 @@ fn memory_prints_the_band_ram_table() {
     let out = sim(&["memory"]);
     assert!(out.status.success());
     let text = String::from_utf8_lossy(&out.stdout);
-    // 240x240 Rgb565 (3 channels), 16 rows: 46080 + 15616 plain, plus
-    // 7680 + 15360 for the z-buffer (depth; coverage and sample mask).
+    // 240x240 Rgb565 (3 channels), 16 rows: 46080 + 19456 plain (the
+    // cover scratch with its tags), plus 7680 + 15360 for the z-buffer
+    // (depth; coverage and sample mask).
     assert!(
-        text.contains("  16    46080    15616     7680    15360    61696     84736"),
+        text.contains("  16    46080    19456     7680    15360    65536     88576"),
         "{text}"
     );
     let out = sim(&["memory", "--width", "128", "--channels", "1", "--rows", "8"]);
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(
-        text.contains("   8     4096     4224     2048     4096     8320     14464"),
+        text.contains("   8     4096     5248     2048     4096     9344     15488"),
         "{text}"
     );
     for bad in [

@@ -1,9 +1,9 @@
 //! softedge's frame loop (`softedge::render::Renderer`) drawing a
 //! scene file into a display type from another crate: the simulator's
 //! `SimulatorDisplay`, wrapped in [`BandsOnly`], a `DrawTarget` that
-//! accepts whole bands through `fill_contiguous` and panics on anything
-//! else: per-pixel writes (`draw_iter`), solid fills, clears, and writes
-//! outside the display. It has no way to read pixels back, as a write-only
+//! accepts whole bands through `fill_contiguous` (or `fill_solid`, for a
+//! band nothing was drawn on) and panics on anything else: per-pixel
+//! writes (`draw_iter`), clears, and writes outside the display. It has no way to read pixels back, as a write-only
 //! SPI display has none.
 //!
 //! The display's pixels must equal what the host renderer shows for the
@@ -24,9 +24,9 @@ use softedge::BandBuffer;
 use softedge_sim::scene::Scene;
 use softedge_sim::scene_file::{self, DisplayFormat, Frame, SceneFile};
 
-/// A display that takes whole bands only: every `fill_contiguous` must be
-/// a full-width rectangle inside the display, directly below the previous
-/// one, with exactly one colour per pixel.
+/// A display that takes whole bands only: every `fill_contiguous` (or
+/// `fill_solid`) must be a full-width rectangle inside the display,
+/// directly below the previous one, with exactly one colour per pixel.
 struct BandsOnly<D> {
     inner: D,
     /// The rectangles received, in order.
@@ -65,8 +65,10 @@ impl<D: DrawTarget + OriginDimensions> DrawTarget for BandsOnly<D> {
         panic!("draw_iter: softedge must send whole bands through fill_contiguous");
     }
 
-    fn fill_solid(&mut self, area: &Rectangle, _: Self::Color) -> Result<(), D::Error> {
-        panic!("fill_solid over {area:?}: softedge must send whole bands through fill_contiguous");
+    /// A band of one colour: the same checks as `fill_contiguous`.
+    fn fill_solid(&mut self, area: &Rectangle, color: Self::Color) -> Result<(), D::Error> {
+        let n = (area.size.width * area.size.height) as usize;
+        self.fill_contiguous(area, core::iter::repeat_n(color, n))
     }
 
     fn clear(&mut self, _: Self::Color) -> Result<(), D::Error> {

@@ -29,7 +29,8 @@ const STYLES: [RenderStyle; 3] = [
     RenderStyle::ALIASED,
 ];
 
-/// Raw contents of a band after `draw`, with the guard areas checked.
+/// Raw values of a band's pixels after `draw` (row by row, `C` per
+/// pixel, as `BandBuffer::raw` reads them), with the guard areas checked.
 fn guarded<const C: usize, T>(
     band: Band,
     bg: [u16; C],
@@ -40,6 +41,7 @@ fn guarded<const C: usize, T>(
     let mut acc = vec![SENTINEL; n_acc + 2 * GUARD];
     let mut cov = vec![SENTINEL; n_cov + 2 * GUARD];
     let out;
+    let mut values = Vec::with_capacity(n_acc);
     {
         let (_, acc_rest) = acc.split_at_mut(GUARD);
         let (acc_mid, _) = acc_rest.split_at_mut(n_acc);
@@ -57,6 +59,9 @@ fn guarded<const C: usize, T>(
                     && x < i32::from(band.width);
                 assert_eq!(buf.lin12(x, y).is_some(), inside);
                 assert_eq!(buf.raw(x, y).is_some(), inside);
+                if let (true, Some(v)) = (inside, buf.raw(x, y)) {
+                    values.extend_from_slice(&v);
+                }
             }
         }
     }
@@ -68,7 +73,7 @@ fn guarded<const C: usize, T>(
     ] {
         assert!(g.iter().all(|&v| v == SENTINEL), "guard area overwritten");
     }
-    (acc[GUARD..GUARD + n_acc].to_vec(), out)
+    (values, out)
 }
 
 fn band(y0: i32, rows: u16) -> Band {

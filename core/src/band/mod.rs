@@ -41,6 +41,11 @@
 //! (the Gouraud plane's value at the run's first pixel, two multiplies)
 //! and stepped by one addition per pixel.
 //!
+//! Beside its accumulator every pixel has a one-byte tag: the place of its
+//! value in the band's palette of opaque flat colours, or `MIXED`
+//! (`band::tags`): the flush tones a palette colour once per band, not
+//! once per pixel.
+//!
 //! ## Units and ranges
 //!
 //! Coverage is in [`COVER_ONE`](crate::COVER_ONE) = 2^16 per pixel. A pixel
@@ -58,12 +63,14 @@ mod errors;
 mod gradient;
 mod pixels;
 mod sweep;
+pub(crate) mod tags;
 mod zsweep;
 
 pub(crate) use crate::units::resolve;
 pub use depth::{DepthBuffer, ZPass, SAMPLES};
 pub(crate) use depth::{SampleEdges, ALL_SAMPLES, FULL, FULL_BITS};
 pub(crate) use sweep::{ComposeOp, Coverage, Paint};
+pub(crate) use tags::{Palette, MIXED};
 
 use crate::shade::LIN_MAX;
 use crate::COVER_BITS;
@@ -71,22 +78,16 @@ use crate::COVER_BITS;
 /// Largest band width and frame height handled, in pixels.
 pub const MAX_WIDTH: u16 = 2048;
 
-/// Per row of the scratch, before its `width` cover changes: their extent
+/// Per row of the scratch, beside its `width` cover changes: their extent
 /// (`lo`, `hi`, inclusive) and the extent of the row's drawn pixels
-/// (`dirty_lo`, `dirty_hi`, half-open).
+/// (`dirty_lo`, `dirty_hi`, half-open). The heads of all rows follow the
+/// changes of all rows, so that the changes are one run of `width * rows`
+/// words (the flush writes the band's colours there).
 const ROW_HEAD: usize = 4;
-/// Extra `i32`s per row of the scratch.
-const ROW_EXTRA: usize = ROW_HEAD;
 /// Offsets in a row's head.
 const LO: usize = 0;
 const HI: usize = 1;
 const DIRTY_LO: usize = 2;
-
-/// Start of row `r` of the scratch of a band `w` wide.
-#[inline]
-const fn row_start(r: usize, w: usize) -> usize {
-    r * (w + ROW_EXTRA)
-}
 
 /// One band: the frame rows `[y0, y0 + rows)`, columns `[x0, x0 + width)`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -205,12 +206,35 @@ pub enum BandError {
 /// The accumulation buffer of one band, over caller-provided storage.
 ///
 /// `C` is the number of channels: 1 (gray) or 3 (RGB).
+///
+/// Beside its accumulator, each pixel has a one-byte tag: the place of its
+/// value in the band's palette when an opaque flat colour covers it whole
+/// (see `band::tags`), which lets the flush tone it once per band.
 #[derive(Debug)]
 pub struct BandBuffer<'a, const C: usize> {
     acc: &'a mut [i32],
-    cover: &'a mut [i32],
+    /// The cover changes of the rows, `width` a row, one after another.
+    deltas: &'a mut [i32],
+    /// The rows' heads ([`ROW_HEAD`] each).
+    heads: &'a mut [i32],
+    /// The pixels' tags, [`tags::row_words`] words a row.
+    tags: &'a mut [i32],
     band: Band,
     background: [u16; C],
+    palette: Palette<C>,
+}
+
+/// The parts of a `cover` slice for a band of `w x rows`: changes, heads,
+/// tags.
+fn split_cover(
+    cover: &mut [i32],
+    w: usize,
+    rows: usize,
+) -> Option<(&mut [i32], &mut [i32], &mut [i32])> {
+    let (deltas, rest) = cover.split_at_mut_checked(w * rows)?;
+    let (heads, rest) = rest.split_at_mut_checked(ROW_HEAD * rows)?;
+    let tags = rest.get_mut(..tags::row_words(w) * rows)?;
+    Some((deltas, heads, tags))
 }
 
 impl<'a, const C: usize> BandBuffer<'a, C> {
@@ -219,21 +243,27 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         width as usize * rows as usize * C
     }
 
-    /// `i32`s needed for the `cover` scratch: one per pixel, and four per
-    /// row: the extent of the row's cover changes (so the sweep visits
-    /// only the columns between a shape's edges) and the extent of what the
-    /// row holds besides the background (so the rest is sent without being
-    /// resolved).
+    /// `i32`s needed for the `cover` scratch: one per pixel (the changes
+    /// of a shape's coverage along each row), four per row (the extent of
+    /// the row's changes, so the sweep visits only the columns between a
+    /// shape's edges, and of what the row holds besides the background,
+    /// so the rest is sent without being resolved), and a byte per pixel
+    /// (the pixel's tag: its colour's place in the band's palette when an
+    /// opaque flat colour covers it whole), four to a word, each row
+    /// starting a word.
     pub const fn cover_len(width: u16, rows: u16) -> usize {
-        (width as usize + ROW_EXTRA) * rows as usize
+        let (w, r) = (width as usize, rows as usize);
+        w * r + ROW_HEAD * r + w.div_ceil(4) * r
     }
 
     /// A buffer for `band` over `acc` and `cover` (longer slices are fine).
     /// Call [`clear`](Self::clear) before drawing.
     pub fn new(acc: &'a mut [i32], cover: &'a mut [i32], band: Band) -> Result<Self, BandError> {
         let mut buf = Self::new_unreset(acc, cover, band)?;
-        for r in 0..band.rows {
-            buf.reset_row(usize::from(r));
+        buf.deltas.fill(0);
+        buf.tags.fill(0);
+        for r in 0..usize::from(band.rows) {
+            buf.reset_head(r);
         }
         Ok(buf)
     }
@@ -254,11 +284,16 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         if cover.len() < Self::cover_len(band.width, band.rows) {
             return Err(BandError::CoverTooSmall);
         }
+        let (w, rows) = (usize::from(band.width), usize::from(band.rows));
+        let (deltas, heads, tags) = split_cover(cover, w, rows).ok_or(BandError::CoverTooSmall)?;
         Ok(Self {
             acc,
-            cover,
+            deltas,
+            heads,
+            tags,
             band,
             background: [0; C],
+            palette: Palette::new([0; C]),
         })
     }
 
@@ -278,102 +313,133 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
     pub fn clear(&mut self, background: [u16; C]) {
         let bg = background.map(|v| v.min(LIN_MAX));
         self.background = bg;
-        let n = Self::acc_len(self.band.width, self.band.rows);
-        let Some(acc) = self.acc.get_mut(..n) else {
-            return;
-        };
         let fill = bg.map(|b| i32::from(b) << COVER_BITS);
-        for px in acc.chunks_mut(C) {
-            if let Ok(px) = <&mut [i32; C]>::try_from(px) {
-                *px = fill;
-            }
+        self.palette = Palette::new(fill);
+        let n = Self::acc_len(self.band.width, self.band.rows);
+        let mut acc = self.acc.get_mut(..n).unwrap_or_default();
+        while let Some((px, rest)) = core::mem::take(&mut acc).split_first_chunk_mut::<C>() {
+            *px = fill;
+            acc = rest;
         }
-        let w = usize::from(self.band.width);
+        self.tags.fill(0);
         for r in 0..usize::from(self.band.rows) {
-            let at = row_start(r, w) + DIRTY_LO;
-            if let Some([dlo, dhi]) = self.cover.get_mut(at..at + 2) {
+            if let Some([_, _, dlo, dhi]) = self.head_mut(r) {
                 (*dlo, *dhi) = (0, 0);
             }
         }
+    }
+
+    /// The accumulator of band pixel `(r, c)`.
+    #[inline]
+    fn value(&self, r: usize, c: usize) -> Option<[i32; C]> {
+        let k = (r * usize::from(self.band.width) + c) * C;
+        self.acc.get(k..k + C)?.first_chunk::<C>().copied()
     }
 
     /// The linear 12-bit value of frame pixel `(x, y)`, or `None` outside
     /// the band. This is the one rounding of the pipeline: round to nearest,
     /// then clamp to `0..=4095`.
     pub fn lin12(&self, x: i32, y: i32) -> Option<[u16; C]> {
-        let k = self.index(x, y)?;
-        let px = self.acc.get(k..k + C)?;
-        let mut out = [0u16; C];
-        for (o, &a) in out.iter_mut().zip(px) {
-            *o = resolve(a);
-        }
-        Some(out)
+        let (r, c) = self.place(x, y)?;
+        Some(self.value(r, c)?.map(resolve))
     }
 
     /// Writes the linear 12-bit values of frame row `y` into `out` (at most
     /// `width` pixels; a shorter `out` gets the row's first pixels).
     /// Returns the number of pixels written, 0 when `y` is not in the band.
     pub fn resolve_row(&self, y: i32, out: &mut [[u16; C]]) -> usize {
-        let Some(row) = self.acc_row(y) else {
+        let Some(r) = self.row_of(y) else {
             return 0;
         };
         let mut n = 0;
-        for (o, px) in out.iter_mut().zip(row.chunks_exact(C)) {
-            for (oc, &a) in o.iter_mut().zip(px) {
-                *oc = resolve(a);
+        for (c, o) in out
+            .iter_mut()
+            .take(usize::from(self.band.width))
+            .enumerate()
+        {
+            if let Some(v) = self.value(r, c) {
+                *o = v.map(resolve);
             }
             n += 1;
         }
         n
     }
 
-    /// The accumulator of frame row `y` (`width * C` values, `lin12 *
-    /// 2^16` each), or `None` when `y` is not in the band.
-    pub(crate) fn acc_row(&self, y: i32) -> Option<&[i32]> {
-        let r = usize::try_from(y.checked_sub(self.band.y0)?).ok()?;
-        if r >= usize::from(self.band.rows) {
-            return None;
-        }
-        let w = usize::from(self.band.width) * C;
-        self.acc.get(r * w..r * w + w)
-    }
-
     /// The raw accumulation of frame pixel `(x, y)`: per channel,
     /// `lin12 * 2^16` before rounding.
     #[cfg(any(test, feature = "internals"))]
     pub fn raw(&self, x: i32, y: i32) -> Option<[i32; C]> {
-        let k = self.index(x, y)?;
-        let px = self.acc.get(k..k + C)?;
-        let mut out = [0i32; C];
-        out.copy_from_slice(px);
-        Some(out)
+        let (r, c) = self.place(x, y)?;
+        self.value(r, c)
     }
 
-    /// Index of channel 0 of `(x, y)` in `acc`.
-    fn index(&self, x: i32, y: i32) -> Option<usize> {
-        let w = i32::from(self.band.width);
-        let c = x.checked_sub(self.band.x0)?;
-        let r = y.checked_sub(self.band.y0)?;
-        if c < 0 || c >= w || r < 0 || r >= i32::from(self.band.rows) {
-            return None;
+    /// Band row and column of frame pixel `(x, y)`.
+    #[inline]
+    fn place(&self, x: i32, y: i32) -> Option<(usize, usize)> {
+        let c = usize::try_from(x.checked_sub(self.band.x0)?).ok()?;
+        let r = self.row_of(y)?;
+        (c < usize::from(self.band.width)).then_some((r, c))
+    }
+
+    /// Band row of frame row `y`.
+    #[inline]
+    fn row_of(&self, y: i32) -> Option<usize> {
+        let r = usize::try_from(y.checked_sub(self.band.y0)?).ok()?;
+        (r < usize::from(self.band.rows)).then_some(r)
+    }
+
+    /// Band row `r`'s head.
+    #[inline]
+    fn head_mut(&mut self, r: usize) -> Option<&mut [i32; ROW_HEAD]> {
+        self.heads
+            .get_mut(r * ROW_HEAD..r * ROW_HEAD + ROW_HEAD)?
+            .first_chunk_mut::<ROW_HEAD>()
+    }
+
+    /// The tag of the opaque flat colour `f` (accumulator units): its
+    /// palette entry, made if there is room. With no room left the band
+    /// goes dense (see [`Palette`]): every tag `MIXED`, for good; `MIXED`
+    /// is the tag then.
+    pub(crate) fn flat_tag(&mut self, f: &[i32; C]) -> u8 {
+        if self.palette.dense {
+            return MIXED;
         }
-        Some((r as usize * w as usize + c as usize) * C)
+        if let Some(t) = self.palette.intern(f) {
+            return t;
+        }
+        self.tags.fill(tags::MIXED_WORD);
+        self.palette.dense = true;
+        MIXED
+    }
+
+    /// Tags pixel `(r, c)` `MIXED` (its accumulator was changed), unless
+    /// the band is dense.
+    #[inline]
+    fn set_mixed(&mut self, r: usize, c: usize) {
+        if self.palette.dense {
+            return;
+        }
+        let n = tags::row_words(usize::from(self.band.width));
+        if let Some(words) = self.tags.get_mut(r * n..r * n + n) {
+            tags::set_mixed(words, c);
+        }
     }
 
     /// Adds values (acc units, one per channel) to frame pixel `(x, y)`;
     /// pixels outside the band are dropped.
     #[inline]
     pub(crate) fn add_cell(&mut self, x: i32, y: i32, values: &[i32; C]) {
-        if let Some(k) = self.index(x, y) {
-            if let Some(px) = self.acc.get_mut(k..k + C) {
-                for (a, &v) in px.iter_mut().zip(values) {
-                    *a = a.saturating_add(v);
-                }
+        let Some((r, c)) = self.place(x, y) else {
+            return;
+        };
+        self.set_mixed(r, c);
+        let k = (r * usize::from(self.band.width) + c) * C;
+        if let Some(px) = self.acc.get_mut(k..k + C) {
+            for (a, &v) in px.iter_mut().zip(values) {
+                *a = a.saturating_add(v);
             }
-            let w = usize::from(self.band.width);
-            let (r, c) = ((k / C) / w, (k / C) % w);
-            self.mark(r, c, c + 1);
         }
+        self.mark(r, c, c + 1);
     }
 
     /// Records a change of cover `delta` (coverage units) starting at frame
@@ -388,14 +454,11 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         if r < 0 || r >= i32::from(self.band.rows) || c >= w {
             return;
         }
-        let c = c.max(0) as usize;
-        let w = w as usize;
-        let start = row_start(r as usize, w);
-        if let Some([lo, hi, _, _, deltas @ ..]) = self.cover.get_mut(start..start + w + ROW_EXTRA)
-        {
-            if let Some(d) = deltas.get_mut(c) {
-                *d = d.wrapping_add(delta);
-            }
+        let (r, c) = (r as usize, c.max(0) as usize);
+        if let Some(d) = self.deltas.get_mut(r * w as usize + c) {
+            *d = d.wrapping_add(delta);
+        }
+        if let Some([lo, hi, _, _]) = self.head_mut(r) {
             *lo = (*lo).min(c as i32);
             *hi = (*hi).max(c as i32);
         }
@@ -411,43 +474,37 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         if r < 0 || r >= i32::from(self.band.rows) || c < 0 || c >= w {
             return;
         }
-        let (c, w) = (c as usize, w as usize);
-        let start = row_start(r as usize, w);
-        if let Some([lo, hi, _, _, deltas @ ..]) = self.cover.get_mut(start..start + w + ROW_EXTRA)
-        {
-            if let Some(d) = deltas.get_mut(c) {
-                *d = d.wrapping_add(area);
-            }
-            let right = if let Some(d) = deltas.get_mut(c + 1) {
+        let (r, c) = (r as usize, c as usize);
+        let start = r * w as usize;
+        if let Some(d) = self.deltas.get_mut(start + c) {
+            *d = d.wrapping_add(area);
+        }
+        let right = if c + 1 < w as usize {
+            if let Some(d) = self.deltas.get_mut(start + c + 1) {
                 *d = d.wrapping_sub(area);
-                c + 1
-            } else {
-                c
-            };
+            }
+            c + 1
+        } else {
+            c
+        };
+        if let Some([lo, hi, _, _]) = self.head_mut(r) {
             *lo = (*lo).min(c as i32);
             *hi = (*hi).max(right as i32);
         }
     }
 
-    /// Empties row `r` of the cover scratch and its extents.
-    fn reset_row(&mut self, r: usize) {
-        let w = usize::from(self.band.width);
-        let start = row_start(r, w);
-        if let Some([lo, hi, dlo, dhi, deltas @ ..]) =
-            self.cover.get_mut(start..start + w + ROW_EXTRA)
-        {
-            deltas.iter_mut().for_each(|c| *c = 0);
-            *lo = i32::MAX;
-            *hi = i32::MIN;
-            (*dlo, *dhi) = (0, 0);
+    /// Empties row `r`'s head: no changes, nothing drawn.
+    fn reset_head(&mut self, r: usize) {
+        if let Some(h) = self.head_mut(r) {
+            *h = [i32::MAX, i32::MIN, 0, 0];
         }
     }
 
     /// A buffer for the next band of a frame over the storage the previous
-    /// band of the same width used, whose scratch every sweep left empty:
-    /// only the extents are reset (not every pixel), and the accumulator is
-    /// taken to hold `background` already (the previous band's flush reset
-    /// it). For the renderer, which knows both.
+    /// band of the same width and rows used (the layout of the scratch
+    /// depends on both), which its flush left clean (no changes, every
+    /// pixel the background `background` and tagged so, the heads reset):
+    /// nothing is cleared here. For the renderer, which knows all that.
     pub(crate) fn reuse(
         acc: &'a mut [i32],
         cover: &'a mut [i32],
@@ -455,51 +512,30 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         background: [u16; C],
     ) -> Result<Self, BandError> {
         let mut buf = Self::new_unreset(acc, cover, band)?;
-        buf.background = background.map(|v| v.min(LIN_MAX));
-        let w = usize::from(band.width);
-        for r in 0..usize::from(band.rows) {
-            let start = row_start(r, w);
-            if let Some([lo, hi, dlo, dhi]) = buf.cover.get_mut(start..start + ROW_HEAD) {
-                *lo = i32::MAX;
-                *hi = i32::MIN;
-                (*dlo, *dhi) = (0, 0);
-            }
-        }
+        let bg = background.map(|v| v.min(LIN_MAX));
+        buf.background = bg;
+        buf.palette = Palette::new(bg.map(|b| i32::from(b) << COVER_BITS));
         Ok(buf)
     }
 
     /// Marks columns `lo..hi` (band-relative) of row `r` as drawn.
     #[inline]
     fn mark(&mut self, r: usize, lo: usize, hi: usize) {
-        let w = usize::from(self.band.width);
-        let at = row_start(r, w) + DIRTY_LO;
-        if let Some([dlo, dhi]) = self.cover.get_mut(at..at + 2) {
-            let (lo, hi) = (lo as i32, hi as i32);
-            if *dlo >= *dhi {
-                (*dlo, *dhi) = (lo, hi);
-            } else {
-                *dlo = (*dlo).min(lo);
-                *dhi = (*dhi).max(hi);
-            }
+        if let Some([_, _, dlo, dhi]) = self.head_mut(r) {
+            mark_extent(dlo, dhi, lo, hi);
         }
     }
 
-    /// The band split for its flush: the accumulator, the drawn extents of
-    /// its rows, and the background in accumulator units.
+    /// The band taken apart for its flush.
     pub(crate) fn flush_parts(&mut self) -> FlushParts<'_, C> {
         let n = Self::acc_len(self.band.width, self.band.rows);
-        let acc = match self.acc.get_mut(..n) {
-            Some(a) => a,
-            None => &mut [],
-        };
         FlushParts {
-            acc,
-            extents: DrawnExtents {
-                cover: &mut *self.cover,
-                width: usize::from(self.band.width),
-                y0: self.band.y0,
-            },
-            background: self.background.map(|b| i32::from(b) << COVER_BITS),
+            acc: self.acc.get_mut(..n).unwrap_or_default(),
+            out: &mut *self.deltas,
+            heads: &mut *self.heads,
+            tags: &mut *self.tags,
+            palette: &self.palette,
+            band: self.band,
         }
     }
 
@@ -510,36 +546,59 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
     }
 }
 
-/// A band taken apart to be sent ([`BandBuffer::flush_parts`]).
+/// Widens a drawn extent `dlo..dhi` (empty when `dlo >= dhi`) by `lo..hi`.
+#[inline]
+fn mark_extent(dlo: &mut i32, dhi: &mut i32, lo: usize, hi: usize) {
+    let (lo, hi) = (lo as i32, hi as i32);
+    if lo >= hi {
+        return;
+    }
+    if *dlo >= *dhi {
+        (*dlo, *dhi) = (lo, hi);
+    } else {
+        *dlo = (*dlo).min(lo);
+        *dhi = (*dhi).max(hi);
+    }
+}
+
+/// A band taken apart to be sent ([`BandBuffer::flush_parts`]): its
+/// accumulator (the flush resets what it sends to the background), the
+/// run of its rows' changes (all zero: the flush writes the band's colours
+/// there, then zeroes it again), the rows' heads (the drawn extents), the
+/// tags and the palette.
 pub(crate) struct FlushParts<'p, const C: usize> {
     pub acc: &'p mut [i32],
-    pub extents: DrawnExtents<'p>,
-    pub background: [i32; C],
+    pub out: &'p mut [i32],
+    pub heads: &'p mut [i32],
+    pub tags: &'p mut [i32],
+    pub palette: &'p Palette<C>,
+    pub band: Band,
 }
 
-/// The drawn extents of a band's rows, read once each as the row is sent.
-pub(crate) struct DrawnExtents<'p> {
-    cover: &'p mut [i32],
-    width: usize,
-    y0: i32,
-}
-
-impl DrawnExtents<'_> {
-    /// The drawn columns of frame row `y`, forgotten.
-    pub(crate) fn take(&mut self, y: i32) -> core::ops::Range<u16> {
-        let w = self.width;
-        let Ok(r) = usize::try_from(y.wrapping_sub(self.y0)) else {
-            return 0..0;
-        };
-        let at = row_start(r, w) + DIRTY_LO;
-        match self.cover.get_mut(at..at + 2) {
-            Some([dlo, dhi]) => {
-                let out = (*dlo).clamp(0, w as i32) as u16..(*dhi).clamp(0, w as i32) as u16;
-                (*dlo, *dhi) = (0, 0);
+impl<const C: usize> FlushParts<'_, C> {
+    /// The drawn columns of band row `r`, forgotten (the head reset for
+    /// the next band).
+    pub(crate) fn take_drawn(&mut self, r: usize) -> core::ops::Range<u16> {
+        let w = i32::from(self.band.width);
+        match self
+            .heads
+            .get_mut(r * ROW_HEAD..r * ROW_HEAD + ROW_HEAD)
+            .and_then(|h| h.first_chunk_mut::<ROW_HEAD>())
+        {
+            Some(h) => {
+                let out = h[DIRTY_LO].clamp(0, w) as u16..h[DIRTY_LO + 1].clamp(0, w) as u16;
+                *h = [i32::MAX, i32::MIN, 0, 0];
                 out
             }
-            _ => 0..0,
+            None => 0..0,
         }
+    }
+
+    /// True when no row was drawn on.
+    pub(crate) fn untouched(&self) -> bool {
+        self.heads
+            .chunks_exact(ROW_HEAD)
+            .all(|h| h[DIRTY_LO] >= h[DIRTY_LO + 1])
     }
 }
 
@@ -550,7 +609,8 @@ impl DrawnExtents<'_> {
 ///
 /// [`EdgeWalk::walk_into`]: crate::edge::EdgeWalk
 pub(crate) struct BandDeltas<'s> {
-    cover: &'s mut [i32],
+    deltas: &'s mut [i32],
+    heads: &'s mut [i32],
     w: i32,
     x0: i32,
     y_first: i32,
@@ -572,7 +632,8 @@ impl<const C: usize> BandBuffer<'_, C> {
     #[inline]
     pub(crate) fn deltas_within(&mut self, r: core::ops::Range<i32>) -> BandDeltas<'_> {
         BandDeltas {
-            cover: &mut *self.cover,
+            deltas: &mut *self.deltas,
+            heads: &mut *self.heads,
             w: i32::from(self.band.width),
             x0: self.band.x0,
             y_first: r.start,
@@ -589,29 +650,31 @@ impl BandDeltas<'_> {
     #[inline(always)]
     pub(crate) fn lend(&mut self) -> BandDeltas<'_> {
         BandDeltas {
-            cover: &mut *self.cover,
+            deltas: &mut *self.deltas,
+            heads: &mut *self.heads,
             ..*self
         }
     }
 
-    /// The start of frame row `y`'s scratch row, if the walk writes it.
+    /// Band row of frame row `y`, if the walk writes it.
     #[inline]
     fn row(&self, y: i32) -> Option<usize> {
         let k = y.wrapping_sub(self.y_first) as u32;
-        (k < self.n).then(|| row_start(self.r_first + k as usize, self.w as usize))
+        (k < self.n).then(|| self.r_first + k as usize)
     }
 
     /// [`put_n`](crate::edge::DeltaSink::put_n)'s changes at a band's
     /// sides, one at a time from band column `c` (left of the band: at its
     /// first column; right of it: dropped). Out of line: rare.
     #[inline(never)]
-    fn put_n_clipped<const K: usize>(&mut self, start: usize, c: i32, step: i32, d: [i32; K]) {
+    fn put_n_clipped<const K: usize>(&mut self, r: usize, c: i32, step: i32, d: [i32; K]) {
         let (mut lo, mut hi) = (i32::MAX, i32::MIN);
         let mut c = c;
+        let start = r * self.w as usize;
         for v in d {
             let k = c.max(0);
             if k < self.w {
-                if let Some(e) = self.cover.get_mut(start + ROW_HEAD + k as usize) {
+                if let Some(e) = self.deltas.get_mut(start + k as usize) {
                     *e = e.wrapping_add(v);
                 }
                 lo = lo.min(k);
@@ -619,13 +682,13 @@ impl BandDeltas<'_> {
             }
             c = c.saturating_add(step);
         }
-        self.widen(start, lo, hi);
+        self.widen(r, lo, hi);
     }
 
-    /// Widens row `start`'s extent of changes to columns `lo..=hi`.
+    /// Widens band row `r`'s extent of changes to columns `lo..=hi`.
     #[inline]
-    fn widen(&mut self, start: usize, lo: i32, hi: i32) {
-        if let Some([l, h]) = self.cover.get_mut(start + LO..start + HI + 1) {
+    fn widen(&mut self, r: usize, lo: i32, hi: i32) {
+        if let Some([l, h]) = self.heads.get_mut(r * ROW_HEAD + LO..r * ROW_HEAD + HI + 1) {
             *l = (*l).min(lo);
             *h = (*h).max(hi);
         }
@@ -656,43 +719,43 @@ impl crate::edge::DeltaSink for BandDeltas<'_> {
             return;
         }
         let (w, c) = (self.w as usize, c as usize);
-        let stride = w + ROW_EXTRA;
-        let mut start = row_start(self.r_first + (ya - self.y_first) as usize, w);
+        let r = self.r_first + (ya - self.y_first) as usize;
+        let mut start = r * w + c;
+        let mut head = r * ROW_HEAD;
         let mut left = yb - ya;
         while left > 0 {
-            if let Some(row) = self.cover.get_mut(start..start + ROW_HEAD + c + 2) {
-                if let Some([l, h]) = row.get_mut(LO..HI + 1) {
-                    *l = (*l).min(c as i32);
-                    *h = (*h).max(c as i32 + 1);
-                }
-                if let Some([e0, e1]) = row.get_mut(ROW_HEAD + c..) {
-                    *e0 = e0.wrapping_add(d0);
-                    *e1 = e1.wrapping_add(d1);
-                }
+            if let Some([l, h]) = self.heads.get_mut(head + LO..head + HI + 1) {
+                *l = (*l).min(c as i32);
+                *h = (*h).max(c as i32 + 1);
             }
-            start += stride;
+            if let Some([e0, e1]) = self.deltas.get_mut(start..start + 2) {
+                *e0 = e0.wrapping_add(d0);
+                *e1 = e1.wrapping_add(d1);
+            }
+            start += w;
+            head += ROW_HEAD;
             left -= 1;
         }
     }
 
     #[inline]
     fn put(&mut self, x: i32, y: i32, d: i32) {
-        let Some(start) = self.row(y) else {
+        let Some(r) = self.row(y) else {
             return;
         };
         let c = x.saturating_sub(self.x0).max(0);
         if c >= self.w {
             return;
         }
-        if let Some(v) = self.cover.get_mut(start + ROW_HEAD + c as usize) {
+        if let Some(v) = self.deltas.get_mut(r * self.w as usize + c as usize) {
             *v = v.wrapping_add(d);
         }
-        self.widen(start, c, c);
+        self.widen(r, c, c);
     }
 
     #[inline]
     fn put2(&mut self, x0: i32, x1: i32, y: i32, d0: i32, d1: i32) {
-        let Some(start) = self.row(y) else {
+        let Some(r) = self.row(y) else {
             return;
         };
         let (c0, c1) = (
@@ -703,19 +766,20 @@ impl crate::edge::DeltaSink for BandDeltas<'_> {
         if lo >= self.w {
             return;
         }
+        let start = r * self.w as usize;
         for (c, d) in [(c0, d0), (c1, d1)] {
             if c < self.w {
-                if let Some(v) = self.cover.get_mut(start + ROW_HEAD + c as usize) {
+                if let Some(v) = self.deltas.get_mut(start + c as usize) {
                     *v = v.wrapping_add(d);
                 }
             }
         }
-        self.widen(start, lo, hi.min(self.w - 1));
+        self.widen(r, lo, hi.min(self.w - 1));
     }
 
     #[inline(always)]
     fn put_n<const K: usize>(&mut self, x: i32, y: i32, step: i32, d: [i32; K]) {
-        let Some(start) = self.row(y) else {
+        let Some(r) = self.row(y) else {
             return;
         };
         // The common case, a y-major edge's row inside the band: the `K`
@@ -725,9 +789,9 @@ impl crate::edge::DeltaSink for BandDeltas<'_> {
             let far = c.saturating_add(step * (K as i32 - 1));
             let (lo, hi) = (c.min(far), c.max(far));
             if lo >= 0 && hi < self.w {
-                let at = start + ROW_HEAD + lo as usize;
+                let at = r * self.w as usize + lo as usize;
                 if let Some((cells, _)) = self
-                    .cover
+                    .deltas
                     .get_mut(at..)
                     .and_then(|r| r.split_first_chunk_mut::<K>())
                 {
@@ -739,12 +803,12 @@ impl crate::edge::DeltaSink for BandDeltas<'_> {
                         };
                         *e = e.wrapping_add(v);
                     }
-                    self.widen(start, lo, hi);
+                    self.widen(r, lo, hi);
                     return;
                 }
             }
         }
-        self.put_n_clipped(start, c, step, d);
+        self.put_n_clipped(r, c, step, d);
     }
 
     #[inline]
@@ -757,7 +821,7 @@ impl crate::edge::DeltaSink for BandDeltas<'_> {
         mut f: F,
     ) -> i32 {
         let c0 = x.saturating_sub(self.x0);
-        let (Some(start), true) = (self.row(y), c0 >= 0 && c0 <= self.w) else {
+        let (Some(r), true) = (self.row(y), c0 >= 0 && c0 <= self.w) else {
             // Outside (or, never for the walker's runs, not in the band's
             // columns): steps only, or one change at a time.
             let mut x = x;
@@ -776,7 +840,7 @@ impl crate::edge::DeltaSink for BandDeltas<'_> {
         // `0..=w` here; a change at `w` (the `-S` of a cell in the band's
         // last column, mirrored) falls off the slice, dropped.
         let w = self.w as usize;
-        let Some(cells) = self.cover.get_mut(start + ROW_HEAD..start + ROW_HEAD + w) else {
+        let Some(cells) = self.deltas.get_mut(r * w..r * w + w) else {
             return 0;
         };
         let mut c = c0 as usize;
@@ -794,7 +858,7 @@ impl crate::edge::DeltaSink for BandDeltas<'_> {
         if k > 0 {
             let last = c0 + step * (k - 1);
             let (lo, hi) = (c0.min(last), c0.max(last).min(self.w - 1));
-            self.widen(start, lo, hi);
+            self.widen(r, lo, hi);
         }
         k
     }
@@ -808,53 +872,99 @@ impl<const C: usize> crate::edge::CoverSink for BandBuffer<'_, C> {
     }
 }
 
-/// Row `r` of the cover scratch for a sweep: its cover changes, their
-/// column extent `lo..=hi` (reset for the next shape: the sweep clears the
-/// changes as it reads them) and the row's drawn extent to widen. `None`
-/// when the row has no changes. Events were clamped into the band at
-/// insertion, so `0 <= lo <= hi < w`.
-fn take_row(cover: &mut [i32], r: usize, w: usize) -> Option<SweepRow<'_>> {
-    let start = row_start(r, w);
-    let row = cover.get_mut(start..start + w + ROW_HEAD)?;
-    let [lo, hi, dlo, dhi, deltas @ ..] = row else {
-        return None;
-    };
-    let (l, h) = (
-        core::mem::replace(lo, i32::MAX),
-        core::mem::replace(hi, i32::MIN),
-    );
-    if l > h {
-        return None;
-    }
-    Some(SweepRow {
-        deltas,
-        lo: l.max(0) as usize,
-        hi: (h.max(0) as usize).min(w - 1),
-        drawn: (dlo, dhi),
-    })
-}
-
-/// One row of the scratch, taken for a sweep.
-struct SweepRow<'r> {
-    deltas: &'r mut [i32],
-    lo: usize,
-    hi: usize,
+/// One row of the scratch, taken for a sweep ([`SweepRows`]): its cover
+/// changes, their column extent `lo..=hi` (`0 <= lo <= hi < w`: events
+/// were clamped into the band at insertion), the row's drawn extent to
+/// widen, its accumulator and its tags.
+pub(crate) struct SweepRow<'r> {
+    pub(crate) deltas: &'r mut [i32],
+    pub(crate) acc: &'r mut [i32],
+    pub(crate) tags: &'r mut [i32],
+    pub(crate) lo: usize,
+    pub(crate) hi: usize,
     drawn: (&'r mut i32, &'r mut i32),
 }
 
 impl SweepRow<'_> {
     /// Widens the row's drawn extent by columns `lo..hi`.
-    fn mark(&mut self, lo: usize, hi: usize) {
-        let (dlo, dhi) = (&mut *self.drawn.0, &mut *self.drawn.1);
-        let (lo, hi) = (lo as i32, hi as i32);
-        if lo >= hi {
-            return;
+    pub(crate) fn mark(&mut self, lo: usize, hi: usize) {
+        mark_extent(self.drawn.0, self.drawn.1, lo, hi);
+    }
+}
+
+/// The band rows a sweep visits, top to bottom, each with its frame row:
+/// only those with cover changes, their extent of changes reset for the
+/// next shape as they are taken (the sweep clears the changes as it reads
+/// them). Each row's parts are split off the fronts of the band's slices
+/// (the rows' starts by additions, not a multiply per row).
+pub(crate) struct SweepRows<'b, const C: usize> {
+    deltas: &'b mut [i32],
+    heads: &'b mut [i32],
+    acc: &'b mut [i32],
+    tags: &'b mut [i32],
+    y: i32,
+    left: usize,
+    w: usize,
+}
+
+impl<'b, const C: usize> Iterator for SweepRows<'b, C> {
+    type Item = (i32, SweepRow<'b>);
+
+    #[inline]
+    fn next(&mut self) -> Option<(i32, SweepRow<'b>)> {
+        let w = self.w;
+        let n = tags::row_words(w);
+        while self.left > 0 {
+            self.left -= 1;
+            let (deltas, d_rest) = core::mem::take(&mut self.deltas).split_at_mut_checked(w)?;
+            let (head, h_rest) =
+                core::mem::take(&mut self.heads).split_first_chunk_mut::<ROW_HEAD>()?;
+            let (acc, a_rest) = core::mem::take(&mut self.acc).split_at_mut_checked(w * C)?;
+            let (tags, t_rest) = core::mem::take(&mut self.tags).split_at_mut_checked(n)?;
+            (self.deltas, self.heads, self.acc, self.tags) = (d_rest, h_rest, a_rest, t_rest);
+            let y = self.y;
+            self.y += 1;
+            let [lo, hi, dlo, dhi] = head;
+            let (l, h) = (
+                core::mem::replace(lo, i32::MAX),
+                core::mem::replace(hi, i32::MIN),
+            );
+            if l > h {
+                continue;
+            }
+            return Some((
+                y,
+                SweepRow {
+                    deltas,
+                    acc,
+                    tags,
+                    lo: l.max(0) as usize,
+                    hi: (h.max(0) as usize).min(w - 1),
+                    drawn: (dlo, dhi),
+                },
+            ));
         }
-        if *dlo >= *dhi {
-            (*dlo, *dhi) = (lo, hi);
-        } else {
-            *dlo = (*dlo).min(lo);
-            *dhi = (*dhi).max(hi);
+        None
+    }
+}
+
+impl<const C: usize> BandBuffer<'_, C> {
+    /// The rows of frame rows `y_lo..y_hi` (clipped to the band) that a
+    /// sweep composes ([`SweepRows`]).
+    #[inline]
+    pub(crate) fn sweep_rows(&mut self, y_lo: i32, y_hi: i32) -> SweepRows<'_, C> {
+        let rows = self.rows_in_band(y_lo, y_hi);
+        let w = usize::from(self.band.width);
+        let first = usize::try_from(rows.start - self.band.y0).unwrap_or(0);
+        let n = tags::row_words(w);
+        SweepRows {
+            deltas: self.deltas.get_mut(first * w..).unwrap_or_default(),
+            heads: self.heads.get_mut(first * ROW_HEAD..).unwrap_or_default(),
+            acc: self.acc.get_mut(first * w * C..).unwrap_or_default(),
+            tags: self.tags.get_mut(first * n..).unwrap_or_default(),
+            y: rows.start,
+            left: usize::try_from(rows.end - rows.start).unwrap_or(0),
+            w,
         }
     }
 }
@@ -878,7 +988,7 @@ mod tests {
     #[test]
     fn short_buffers_and_bad_bands_are_errors() {
         let mut acc = [0i32; 8];
-        let mut cov = [0i32; 16];
+        let mut cov = [0i32; 18];
         let band = Band::new(4, 0, 2);
         assert!(BandBuffer::<1>::new(&mut acc, &mut cov, band).is_ok());
         assert_eq!(
@@ -898,7 +1008,7 @@ mod tests {
     #[test]
     fn out_of_band_reads_and_writes_are_dropped() {
         let mut acc = [0i32; 8];
-        let mut cov = [0i32; 16];
+        let mut cov = [0i32; 18];
         let mut b = BandBuffer::<1>::new(&mut acc, &mut cov, Band::new(4, 10, 2)).unwrap();
         b.clear([100]);
         assert_eq!(b.lin12(0, 10), Some([100]));
@@ -909,13 +1019,13 @@ mod tests {
         b.add_cover(99, 10, 5);
         b.add_cover(0, 12, 5);
         assert_eq!(b.lin12(0, 10), Some([100]));
-        assert!(take_row(b.cover, 0, 4).is_none());
+        assert!(b.sweep_rows(10, 12).next().is_none());
     }
 
     #[test]
     fn windowed_band_addresses_frame_columns() {
         let mut acc = [0i32; 4];
-        let mut cov = [0i32; 8];
+        let mut cov = [0i32; 9];
         let band = Band {
             width: 4,
             y0: 3,

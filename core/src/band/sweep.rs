@@ -23,7 +23,8 @@
 //! a level, of the exact `acc (1 - k) + I k`. The sweep clears what it
 //! reads, for the next shape.
 
-use super::{take_row, BandBuffer};
+use super::tags::{self, MIXED};
+use super::BandBuffer;
 use crate::shade::{Plane, PLANE_FRAC};
 use crate::style::{FillRule, Opacity};
 use crate::{COVER_BITS, COVER_ONE};
@@ -217,21 +218,19 @@ impl<const C: usize> BandBuffer<'_, C> {
                 k
             }
         };
-        for y in self.rows_in_band(y_lo, y_hi) {
-            let r = (y - self.band.y0) as usize;
-            let Some(mut row) = take_row(self.cover, r, w) else {
-                continue;
-            };
+        let dense = self.palette.dense;
+        for (y, mut row) in self.sweep_rows(y_lo, y_hi) {
             let (lo, hi) = (row.lo, row.hi);
             let Some(changes) = row.deltas.get_mut(lo..=hi) else {
                 continue;
             };
-            let Some(px) = self.acc.get_mut((r * w + lo) * C..(r + 1) * w * C) else {
-                changes.iter_mut().for_each(|d| *d = 0);
-                continue;
-            };
             let x = x0.saturating_add(lo as i32);
-            let (first, last) = sweep_row(op, changes, px, w - lo, (x, y), &factor);
+            let mut pixels = RowPixels {
+                acc: &mut *row.acc,
+                tags: &mut *row.tags,
+                dense,
+            };
+            let (first, last) = sweep_row(op, changes, &mut pixels, lo, w, (x, y), &factor);
             if first < last {
                 row.mark(lo + first, lo + last);
             }
@@ -248,26 +247,32 @@ impl<const C: usize> BandBuffer<'_, C> {
     #[inline(always)]
     fn sweep_over_flat(&mut self, y_lo: i32, y_hi: i32, f: &[i32; C], signed: bool) {
         let w = usize::from(self.band.width);
-        for y in self.rows_in_band(y_lo, y_hi) {
-            let r = (y - self.band.y0) as usize;
-            let Some(mut row) = take_row(self.cover, r, w) else {
-                continue;
-            };
+        let tag = self.flat_tag(f);
+        let dense = self.palette.dense;
+        let flat = Flat { f: *f, tag, dense };
+        for (_, mut row) in self.sweep_rows(y_lo, y_hi) {
             let (lo, hi) = (row.lo, row.hi);
             let Some(changes) = row.deltas.get_mut(lo..=hi) else {
                 continue;
             };
-            let Some(px) = self.acc.get_mut((r * w + lo) * C..(r + 1) * w * C) else {
-                changes.iter_mut().for_each(|d| *d = 0);
-                continue;
-            };
             // The signed case (every flat triangle) in a loop of its own
             // for colours: a register more for the row's state. One
-            // channel measures faster with the test in the loop.
-            let (first, last) = if signed && C > 1 {
-                over_flat_row::<C, true>(f, changes, px, w - lo, true)
-            } else {
-                over_flat_row::<C, false>(f, changes, px, w - lo, signed)
+            // channel measures faster with the test in the loop. A dense
+            // band has no tags to keep.
+            let px = row.acc.get_mut(lo * C..).unwrap_or_default();
+            let mut tagged = RowTags {
+                words: &mut *row.tags,
+                lo,
+                tag,
+            };
+            let tail = w - lo;
+            let f = &flat.f;
+            let t = &mut tagged;
+            let (first, last) = match (signed && C > 1, dense) {
+                (true, false) => over_flat_row::<C, true, true>(f, changes, px, tail, true, t),
+                (true, true) => over_flat_row::<C, true, false>(f, changes, px, tail, true, t),
+                (false, false) => over_flat_row::<C, false, true>(f, changes, px, tail, signed, t),
+                (false, true) => over_flat_row::<C, false, false>(f, changes, px, tail, signed, t),
             };
             if first < last {
                 row.mark(lo + first, lo + last);
@@ -276,23 +281,55 @@ impl<const C: usize> BandBuffer<'_, C> {
     }
 }
 
+/// An opaque flat colour `f` (accumulator units) and its tag in the
+/// band's palette (`MIXED` when it has none); `dense`: the band keeps no
+/// tags (see [`Palette`]).
+pub(super) struct Flat<const C: usize> {
+    pub(super) f: [i32; C],
+    pub(super) tag: u8,
+    pub(super) dense: bool,
+}
+
+impl<const C: usize> Flat<C> {
+    /// Pixels `c0..c1` of a row (its accumulator and tags) wholly covered
+    /// by `f`: stored, and tagged with its entry.
+    pub(super) fn whole(&self, acc: &mut [i32], words: &mut [i32], c0: usize, c1: usize) {
+        store(acc, c0, c1.saturating_sub(c0), &self.f);
+        if !self.dense {
+            tags::fill(words, c0, c1, self.tag);
+        }
+    }
+}
+
+/// A row's tags as an opaque flat over keeps them: the row's tag words,
+/// the column where the pixels given start, and the colour's tag.
+pub(super) struct RowTags<'w> {
+    words: &'w mut [i32],
+    lo: usize,
+    tag: u8,
+}
+
 /// One row of an opaque flat over (see [`sweep_row`]): the share of a
 /// pixel is its coverage clamped to `0..=1` px (`SIGNED` or `signed`: the
 /// first fixed at compile time) or its size clamped to 1 px (nonzero);
 /// whole pixels are stored (a tight loop to the next change), partial ones
-/// blended. The drawn extent it returns is a superset of the pixels drawn,
-/// found without a test per change: from the row's first change (where a
-/// simple outline's share starts) to its last, or to the band's end when
-/// coverage is left; a pixel marked but not drawn holds what it held, and
-/// the flush resolves it to the same colour (a row whose changes cancel
-/// out is marked too, at the cost of resolving it).
+/// blended; with `TAGS`, whole pixels are tagged with the colour's tag and
+/// the others `MIXED` (see `band::tags`). `changes` are the row's from its
+/// column `tags.lo` on, `px` the row's pixels from there to the band's end
+/// (`tail` of them). The drawn extent it returns (relative to `tags.lo`) is
+/// a superset of the pixels drawn, found without a test per change: from
+/// the row's first change (where a simple outline's share starts) to its
+/// last, or to the band's end when coverage is left; a pixel marked but not
+/// drawn holds what it held, and the flush gives it the same colour (a row
+/// whose changes cancel out is marked too, at the cost of resolving it).
 #[inline(never)]
-fn over_flat_row<const C: usize, const SIGNED: bool>(
+fn over_flat_row<const C: usize, const SIGNED: bool, const TAGS: bool>(
     f: &[i32; C],
     changes: &mut [i32],
     px: &mut [i32],
     tail: usize,
     signed: bool,
+    tags: &mut RowTags<'_>,
 ) -> (usize, usize) {
     let n = changes.len();
     let mut c: i32 = 0;
@@ -313,41 +350,49 @@ fn over_flat_row<const C: usize, const SIGNED: bool>(
                 c.unsigned_abs().min(COVER_ONE as u32) as i32
             };
         }
-        let at = i * C;
+        let at = i;
         i += 1;
         if s == COVER_ONE {
             // The run's whole pixels: to the next change (found first, a
             // tight loop), then stored from a slice of exactly that many
             // pixels, stepped a chunk at a time (a loop bounded by the
             // pixels left would make the compiler divide their count by
-            // C, a library call on the Cortex-M0).
+            // C, a library call on the Cortex-M0), and tagged.
             let rest = changes.get(i..).unwrap_or_default();
             let k = rest.iter().position(|&d| d != 0).unwrap_or(rest.len());
-            let mut run = px.get_mut(at..at + (k + 1) * C).unwrap_or_default();
-            while let Some((p, more)) = core::mem::take(&mut run).split_first_chunk_mut::<C>() {
-                *p = *f;
-                run = more;
+            store(px, at, k + 1, f);
+            if TAGS {
+                tags::fill(tags.words, tags.lo + at, tags.lo + at + k + 1, tags.tag);
             }
             i += k;
         } else if s != 0 {
             if let Some(p) = px
-                .get_mut(at..at + C)
+                .get_mut(at * C..at * C + C)
                 .and_then(|p| p.first_chunk_mut::<C>())
             {
                 blend_over(p, f, s);
+                if TAGS {
+                    tags::set_mixed(tags.words, tags.lo + at);
+                }
             }
         }
     }
     if s != 0 {
         // Coverage left after the last change runs to the band's end.
-        let mut px = px.get_mut(n * C..).unwrap_or_default();
-        while let Some((p, rest)) = core::mem::take(&mut px).split_first_chunk_mut::<C>() {
-            if s == COVER_ONE {
-                *p = *f;
-            } else {
-                blend_over(p, f, s);
+        if s == COVER_ONE {
+            store(px, n, tail.saturating_sub(n), f);
+            if TAGS {
+                tags::fill(tags.words, tags.lo + n, tags.lo + tail, tags.tag);
             }
-            px = rest;
+        } else {
+            let mut rest = px.get_mut(n * C..).unwrap_or_default();
+            while let Some((p, more)) = core::mem::take(&mut rest).split_first_chunk_mut::<C>() {
+                blend_over(p, f, s);
+                rest = more;
+            }
+            if TAGS {
+                tags::fill(tags.words, tags.lo + n, tags.lo + tail, MIXED);
+            }
         }
         (0, n.max(tail))
     } else {
@@ -355,6 +400,17 @@ fn over_flat_row<const C: usize, const SIGNED: bool>(
         // ended the coverage, or it has none and the share before it was
         // none.
         (0, n.saturating_sub(1))
+    }
+}
+
+/// `f` into the `k` pixels of `px` from pixel `a` on.
+#[inline(always)]
+fn store<const C: usize>(px: &mut [i32], a: usize, k: usize, f: &[i32; C]) {
+    let at = a * C;
+    let mut run = px.get_mut(at..at + k * C).unwrap_or_default();
+    while let Some((p, rest)) = core::mem::take(&mut run).split_first_chunk_mut::<C>() {
+        *p = *f;
+        run = rest;
     }
 }
 
@@ -370,26 +426,48 @@ fn blend_over<const C: usize>(p: &mut [i32; C], f: &[i32; C], k: i32) {
 const WHOLE: i32 = i32::MAX;
 const SKIP: i32 = i32::MIN;
 
-/// One row of a sweep: `changes` (the row's from its first change on,
-/// cleared here) and its pixels `px` from there to the band's end (`tail`
-/// pixels), the first at frame pixel `(x, y)`. Each pixel's coverage is
-/// the running sum; at each change the factor is found once (`factor`:
-/// [`WHOLE`], [`SKIP`], 0 for no share, or the composite's factor), and the
-/// run of pixels up to the next change composed with it; coverage left
-/// after the last change carries on to the band's end. Returns the drawn
-/// extent: from the first pixel with a share to the end of the last run
-/// with one. Out of line, so that its loops keep their values in
+/// A band row's pixels as a sweep composes them: the accumulator and tags
+/// of the whole row; `dense`: the band keeps no tags (see [`Palette`]).
+pub(super) struct RowPixels<'r, const C: usize> {
+    pub(super) acc: &'r mut [i32],
+    pub(super) tags: &'r mut [i32],
+    pub(super) dense: bool,
+}
+
+impl<const C: usize> RowPixels<'_, C> {
+    /// The accumulator of pixels `c0..c1`, to be changed: their tags set
+    /// `MIXED` (see `band::tags`).
+    #[inline]
+    pub(super) fn take(&mut self, c0: usize, c1: usize) -> &mut [i32] {
+        if !self.dense {
+            tags::fill(self.tags, c0, c1, MIXED);
+        }
+        self.acc.get_mut(c0 * C..c1 * C).unwrap_or_default()
+    }
+}
+
+/// One row of a sweep: `changes` (the row's from its first change at
+/// column `lo` on, cleared here) and the row's pixels, `w` of them, the
+/// one at `lo` frame pixel `(x, y)`. Each pixel's coverage is the running
+/// sum; at each change the factor is found once (`factor`: [`WHOLE`],
+/// [`SKIP`], 0 for no share, or the composite's factor), and the run of
+/// pixels up to the next change composed with it; coverage left after the
+/// last change carries on to the band's end. Returns the drawn extent
+/// (relative to `lo`): from the first pixel with a share to the end of the
+/// last run with one. Out of line, so that its loops keep their values in
 /// registers.
 #[inline(never)]
 fn sweep_row<O: RunOp<C>, F: Fn(i32) -> i32, const C: usize>(
     op: &O,
     changes: &mut [i32],
-    px: &mut [i32],
-    tail: usize,
+    pixels: &mut RowPixels<'_, C>,
+    lo: usize,
+    w: usize,
     (x, y): (i32, i32),
     factor: &F,
 ) -> (usize, usize) {
     let n = changes.len();
+    let tail = w - lo;
     let mut c: i32 = 0;
     let (mut first, mut last) = (usize::MAX, 0);
     let mut i = 0;
@@ -408,7 +486,8 @@ fn sweep_row<O: RunOp<C>, F: Fn(i32) -> i32, const C: usize>(
                 first = i;
             }
             last = end;
-            if let Some(run) = px.get_mut(i * C..end * C) {
+            if k != SKIP {
+                let run = pixels.take(lo + i, lo + end);
                 op.run(run, k, (x.wrapping_add(i as i32), y));
             }
         }
@@ -691,7 +770,7 @@ mod tests {
 
     #[test]
     fn over_at_half_coverage_is_the_linear_midpoint() {
-        let (mut acc, mut cover) = ([0i32; 4], [0i32; 12]);
+        let (mut acc, mut cover) = ([0i32; 4], [0i32; 14]);
         let band = crate::band::Band::new(2, 0, 2);
         let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
         buf.clear([1000]);
@@ -747,16 +826,23 @@ mod tests {
 
     /// `over_flat_row` against a reference written out here (running
     /// coverage, its share, `p + floor((f - p) s / 2^16)` in 64 bits): the
-    /// pixels it composes, the changes it clears, and a drawn extent that
-    /// holds every pixel it changed (the flush resolves only those).
+    /// values it leaves, tags that stay true (a pixel tagged with an entry
+    /// holds exactly that entry's value), the changes it clears, and a
+    /// drawn extent that holds every pixel it changed (the flush resolves
+    /// only those). Rows start with pixels tagged with random palette
+    /// entries (holding their values) or `MIXED` with random values; the
+    /// colour has a tag or (palette full) none; the band keeps tags or is
+    /// dense.
     #[test]
     fn over_flat_rows_match_the_reference_and_mark_every_drawn_pixel() {
         const C: usize = 3;
         let mut rng = crate::path::testing::Lcg(0x5eed_0f1a);
         for case in 0..4000 {
+            let lo = rng.below(6) as usize;
             let n = 1 + rng.below(24) as usize;
-            let tail = n + rng.below(6) as usize;
+            let w = lo + n + rng.below(6) as usize;
             let signed = rng.below(2) == 0;
+            let dense = rng.below(4) == 0;
             let mut changes: std::vec::Vec<i32> = (0..n)
                 .map(|_| match rng.below(4) {
                     0 => 0,
@@ -771,15 +857,34 @@ mod tests {
                 let sum: i32 = changes[..n - 1].iter().sum();
                 changes[n - 1] = -sum;
             }
-            let px0: std::vec::Vec<i32> = (0..tail * C)
-                .map(|_| rng.below(4096) as i32 * COVER_ONE + rng.below(1 << 16) as i32)
-                .collect();
+            let lvl = |rng: &mut crate::path::testing::Lcg| {
+                rng.below(4096) as i32 * COVER_ONE + rng.below(1 << 16) as i32
+            };
+            // A palette of 1 to PALETTE entries (full: the colour has no
+            // tag).
+            let entries = 1 + rng.below(tags::PALETTE as u64) as usize;
+            let mut palette = tags::Palette::<C>::new(core::array::from_fn(|_| lvl(&mut rng)));
+            for _ in 1..entries {
+                palette.intern(&core::array::from_fn(|_| lvl(&mut rng)));
+            }
+            let mut acc: std::vec::Vec<i32> = (0..w * C).map(|_| lvl(&mut rng)).collect();
+            let mut words = std::vec![tags::MIXED_WORD; tags::row_words(w)];
+            if !dense {
+                for x in 0..w {
+                    if rng.below(2) == 0 {
+                        let t = rng.below(palette.len() as u64) as u8;
+                        tags::set(&mut words, x, t);
+                        acc[x * C..x * C + C].copy_from_slice(palette.value(t).unwrap());
+                    }
+                }
+            }
+            let before = acc.clone();
             let f: [i32; C] = core::array::from_fn(|_| rng.below(4096) as i32 * COVER_ONE);
             // The reference.
-            let mut want = px0.clone();
+            let mut want = before.clone();
             let mut c = 0i64;
-            for x in 0..tail {
-                c += i64::from(changes.get(x).copied().unwrap_or(0));
+            for x in lo..w {
+                c += i64::from(changes.get(x - lo).copied().unwrap_or(0));
                 let s = if signed {
                     c.clamp(0, i64::from(COVER_ONE))
                 } else {
@@ -791,20 +896,43 @@ mod tests {
                     want[x * C + ch] = v as i32;
                 }
             }
-            let mut px = px0.clone();
-            let mut ch_buf = changes.clone();
-            let (first, last) = if signed {
-                over_flat_row::<C, true>(&f, &mut ch_buf, &mut px, tail, true)
+            let tag = if dense {
+                MIXED
             } else {
-                over_flat_row::<C, false>(&f, &mut ch_buf, &mut px, tail, false)
+                palette.intern(&f).unwrap_or(MIXED)
             };
-            assert_eq!(px, want, "case {case}: {changes:?}");
+            let mut ch_buf = changes.clone();
+            let mut t = RowTags {
+                words: &mut words,
+                lo,
+                tag,
+            };
+            let px = &mut acc[lo * C..];
+            let tail = w - lo;
+            let (first, last) = match (signed, dense) {
+                (true, false) => {
+                    over_flat_row::<C, true, true>(&f, &mut ch_buf, px, tail, true, &mut t)
+                }
+                (true, true) => {
+                    over_flat_row::<C, true, false>(&f, &mut ch_buf, px, tail, true, &mut t)
+                }
+                (false, false) => {
+                    over_flat_row::<C, false, true>(&f, &mut ch_buf, px, tail, false, &mut t)
+                }
+                (false, true) => {
+                    over_flat_row::<C, false, false>(&f, &mut ch_buf, px, tail, false, &mut t)
+                }
+            };
+            assert_eq!(acc, want, "case {case}: {changes:?}");
             assert!(ch_buf.iter().all(|&d| d == 0), "case {case}");
-            for x in 0..tail {
-                if px[x * C..(x + 1) * C] != px0[x * C..(x + 1) * C] {
+            for x in 0..w {
+                if let Some(v) = palette.value(tags::get(&words, x)) {
+                    assert_eq!(&acc[x * C..x * C + C], v, "case {case}: pixel {x}'s tag");
+                }
+                if acc[x * C..x * C + C] != before[x * C..x * C + C] {
                     assert!(
-                        first <= x && x < last,
-                        "case {case}: pixel {x} drawn outside {first}..{last}"
+                        lo + first <= x && x < lo + last,
+                        "case {case}: pixel {x} drawn outside {first}..{last} (+{lo})"
                     );
                 }
             }

@@ -36,21 +36,18 @@ impl<const C: usize> BandBuffer<'_, C> {
         let w = usize::from(self.band.width);
         let bg = self.background.map(|b| i32::from(b) << COVER_BITS);
         let full = i32::from(FULL);
-        for y in self.rows_in_band(y_lo, y_hi) {
-            let r = (y - self.band.y0) as usize;
-            let Some(mut row) = super::take_row(self.cover, r, w) else {
-                continue;
-            };
+        let y_band = self.band.y0;
+        let dense = self.palette.dense;
+        for (y, mut row) in self.sweep_rows(y_lo, y_hi) {
+            let r = (y - y_band) as usize;
             let (lo, hi) = (row.lo, row.hi);
             let deltas = &mut *row.deltas;
-            let (Some(row_acc), Some((zrow, krow, mrow))) = (
-                self.acc.get_mut(r * w * C..(r + 1) * w * C),
-                zbuf.row_mut(r),
-            ) else {
+            let Some((zrow, krow, mrow)) = zbuf.row_mut(r) else {
                 // Clear what the walk left, even without a depth row.
                 deltas.iter_mut().for_each(|d| *d = 0);
                 continue;
             };
+            let row_acc = &mut *row.acc;
             // Row setup: the only multiplies outside partly covered pixels.
             let mut v = plane.at(lo as i32, y);
             let mut zf = zplane.at(lo as i32, y);
@@ -136,6 +133,10 @@ impl<const C: usize> BandBuffer<'_, C> {
                 if let Some(se) = samples {
                     se.step(&mut e);
                 }
+            }
+            // What the composite may have changed is no palette colour.
+            if !dense {
+                super::tags::fill(row.tags, lo, drawn_end, super::MIXED);
             }
             row.mark(lo, drawn_end);
         }

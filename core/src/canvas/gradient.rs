@@ -19,7 +19,7 @@ impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
     /// use softedge::geom::FinePoint;
     /// use softedge::style::{Blend, FillRule, Gradient, Offset, Opacity, Stop};
     /// use softedge::{Band, BandBuffer};
-    /// let (mut acc, mut cover) = ([0i32; 64], [0i32; 80]);
+    /// let (mut acc, mut cover) = ([0i32; 64], [0i32; BandBuffer::<1>::cover_len(16, 4)]);
     /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band::new(16, 0, 4)).unwrap();
     /// buf.clear([0]);
     /// let mut canvas: Canvas<'_, '_, 1> = Canvas::new(&mut buf, None);
@@ -57,7 +57,7 @@ impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
     /// use softedge::path::Circle;
     /// use softedge::style::{Blend, FillRule, Gradient, Offset, Opacity, Stop};
     /// use softedge::{Band, BandBuffer};
-    /// let (mut acc, mut cover) = ([0i32; 400], [0i32; 480]);
+    /// let (mut acc, mut cover) = ([0i32; 400], [0i32; BandBuffer::<1>::cover_len(20, 20)]);
     /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band::new(20, 0, 20)).unwrap();
     /// buf.clear([0]);
     /// let mut canvas: Canvas<'_, '_, 1> = Canvas::new(&mut buf, None);
@@ -102,7 +102,7 @@ impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
     /// use softedge::path::{Line, StrokeStyle};
     /// use softedge::style::{Blend, Gradient, Offset, Opacity, Stop};
     /// use softedge::{Band, BandBuffer};
-    /// let (mut acc, mut cover) = ([0i32; 3 * 32 * 8], [0i32; 36 * 8]);
+    /// let (mut acc, mut cover) = ([0i32; 3 * 32 * 8], [0i32; BandBuffer::<3>::cover_len(32, 8)]);
     /// let mut buf = BandBuffer::<3>::new(&mut acc, &mut cover, Band::new(32, 0, 8)).unwrap();
     /// buf.clear([0; 3]);
     /// let mut canvas: Canvas<'_, '_, 3> = Canvas::new(&mut buf, None);

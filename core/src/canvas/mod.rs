@@ -372,7 +372,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
     /// use softedge::geom::FinePoint;
     /// use softedge::style::{Blend, FillRule, Opacity};
     /// use softedge::{Band, BandBuffer};
-    /// let (mut acc, mut cover) = ([0i32; 16], [0i32; 32]);
+    /// let (mut acc, mut cover) = ([0i32; 16], [0i32; BandBuffer::<1>::cover_len(4, 4)]);
     /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band::new(4, 0, 4)).unwrap();
     /// buf.clear([1000]);
     /// let mut canvas = Canvas::new(&mut buf, None);
@@ -420,7 +420,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
     /// use softedge::path::Circle;
     /// use softedge::style::{Blend, FillRule, Opacity};
     /// use softedge::{Band, BandBuffer};
-    /// let (mut acc, mut cover) = ([0i32; 400], [0i32; 480]);
+    /// let (mut acc, mut cover) = ([0i32; 400], [0i32; BandBuffer::<1>::cover_len(20, 20)]);
     /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band::new(20, 0, 20)).unwrap();
     /// buf.clear([0]);
     /// let mut canvas = Canvas::new(&mut buf, None);
@@ -1209,7 +1209,10 @@ mod tests {
         let px = |x: i32, y: i32| FinePoint::new(x * FINE_ONE_PX, y * FINE_ONE_PX);
         let far = FINE_LIMIT + 1;
         for y0 in [0, 16, 48] {
-            let (mut acc, mut cover) = ([0i32; 16 * 32], [0i32; 16 * (32 + 4)]);
+            let (mut acc, mut cover) = (
+                [0i32; BandBuffer::<1>::acc_len(W, 16)],
+                [0i32; BandBuffer::<1>::cover_len(W, 16)],
+            );
             let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band::new(W, y0, 16)).unwrap();
             buf.clear([0]);
             let mut c = Canvas::new(&mut buf, None);
@@ -1238,7 +1241,10 @@ mod tests {
         // A triangle whose rows end a pixel above the band still reaches it
         // through the margin test and is walked (its cells there are empty,
         // so the band stays clear), and one across the band is drawn.
-        let (mut acc, mut cover) = ([0i32; 16 * 32], [0i32; 16 * (32 + 4)]);
+        let (mut acc, mut cover) = (
+            [0i32; BandBuffer::<1>::acc_len(W, 16)],
+            [0i32; BandBuffer::<1>::cover_len(W, 16)],
+        );
         let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band::new(W, 16, 16)).unwrap();
         buf.clear([0]);
         let mut c = Canvas::new(&mut buf, None);

@@ -155,7 +155,7 @@ impl Default for ShapeEntry {
 /// use softedge::{Band, BandBuffer, Bands};
 /// let mut segments = [Segment::default(); 256];
 /// let mut entries = [ShapeEntry::EMPTY; 4];
-/// let (mut acc, mut cover) = ([0i32; 40 * 8], [0i32; 44 * 8]);
+/// let (mut acc, mut cover) = ([0i32; 40 * 8], [0i32; BandBuffer::<1>::cover_len(40, 8)]);
 /// let disc = Circle::new(FinePoint::new(20 * 1024, 20 * 1024), 12 * 1024);
 /// for frame in 0..2 {
 ///     for band in Bands::new(40, 40, 8) {

@@ -23,7 +23,7 @@
 //! use embedded_graphics::primitives::{Circle, Line};
 //! use softedge::prelude::*;
 //! # use softedge::{Band, BandBuffer};
-//! # let (mut acc, mut cover) = ([0i32; 3 * 400], [0i32; 480]);
+//! # let (mut acc, mut cover) = ([0i32; 3 * 400], [0i32; BandBuffer::<3>::cover_len(20, 20)]);
 //! # let mut buf = BandBuffer::<3>::new(&mut acc, &mut cover, Band::new(20, 0, 20)).unwrap();
 //! # buf.clear([0; 3]);
 //! # let mut canvas: Canvas<'_, '_, 3, Rgb888> = Canvas::typed(&mut buf, None);
@@ -266,7 +266,7 @@ impl<P: AaShape, Col: Copy + IntoLinear<C>, const C: usize> AaDrawable<C>
 /// use softedge::prelude::*;
 /// use softedge::style::{Gradient, Offset, Stop};
 /// # use softedge::{Band, BandBuffer};
-/// # let (mut acc, mut cover) = ([0i32; 3 * 400], [0i32; 480]);
+/// # let (mut acc, mut cover) = ([0i32; 3 * 400], [0i32; BandBuffer::<3>::cover_len(20, 20)]);
 /// # let mut buf = BandBuffer::<3>::new(&mut acc, &mut cover, Band::new(20, 0, 20)).unwrap();
 /// # buf.clear([0; 3]);
 /// # let mut canvas: Canvas<'_, '_, 3, Rgb565> = Canvas::typed(&mut buf, None);

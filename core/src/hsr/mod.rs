@@ -257,7 +257,7 @@ impl<const C: usize> DepthTriangle<C> {
     /// use softedge::hsr::{DepthBuffer, DepthTriangle, ZPass};
     /// use softedge::{Band, BandBuffer, RenderStyle, SubPoint};
     /// let band = Band::new(8, 0, 8);
-    /// let (mut acc, mut cover) = ([0i32; 64], [0i32; 96]);
+    /// let (mut acc, mut cover) = ([0i32; 64], [0i32; BandBuffer::<1>::cover_len(8, 8)]);
     /// let (mut depth, mut covered) = ([0u16; 64], [0u16; 128]);
     /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
     /// let mut zbuf = DepthBuffer::new(&mut depth, &mut covered, band).unwrap();
@@ -333,7 +333,7 @@ impl<const C: usize> DepthTriangle<C> {
 /// use softedge::hsr::{draw_zbuffer, sort_front_to_back, DepthBuffer, DepthTriangle};
 /// use softedge::{Band, BandBuffer, RenderStyle, SubPoint};
 /// let band = Band::new(8, 0, 8);
-/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 96]);
+/// let (mut acc, mut cover) = ([0i32; 64], [0i32; BandBuffer::<1>::cover_len(8, 8)]);
 /// let (mut depth, mut covered) = ([0u16; 64], [0u16; 128]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// let mut zbuf = DepthBuffer::new(&mut depth, &mut covered, band).unwrap();

@@ -195,7 +195,7 @@ pub struct WarnockStats {
 /// use softedge::hsr::{draw_warnock, scratch_len, DepthTriangle};
 /// use softedge::{Band, BandBuffer, SubPoint};
 /// let band = Band::new(8, 0, 8);
-/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 96]);
+/// let (mut acc, mut cover) = ([0i32; 64], [0i32; BandBuffer::<1>::cover_len(8, 8)]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
 /// let p = |x, y| SubPoint::from_px(x, y);

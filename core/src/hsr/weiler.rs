@@ -612,7 +612,7 @@ pub struct WeilerStats {
 /// let stats = set.compute(&tris).unwrap();
 /// assert_eq!(stats.occlusions, 1);
 /// let band = Band::new(8, 0, 8);
-/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 96]);
+/// let (mut acc, mut cover) = ([0i32; 64], [0i32; BandBuffer::<1>::cover_len(8, 8)]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
 /// set.draw(&tris, &mut buf, &RenderStyle::default()).unwrap();

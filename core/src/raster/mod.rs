@@ -124,7 +124,7 @@ impl RenderStyle {
 /// ```
 /// use softedge::{Band, BandBuffer, RenderStyle, SubPoint, Triangle};
 /// let band = Band::new(8, 0, 8);
-/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 96]);
+/// let (mut acc, mut cover) = ([0i32; 64], [0i32; BandBuffer::<1>::cover_len(8, 8)]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
 /// // Half of pixel (0, 0), exactly: the triangle (0,0) (1,0) (0,1) px.
@@ -197,7 +197,7 @@ pub enum PolygonColors<'a, const C: usize> {
 /// ```
 /// use softedge::{Band, BandBuffer, Polygon, PolygonColors, RenderStyle, SubPoint};
 /// let band = Band::new(8, 0, 8);
-/// let (mut acc, mut cover) = ([0i32; 64], [0i32; 96]);
+/// let (mut acc, mut cover) = ([0i32; 64], [0i32; BandBuffer::<1>::cover_len(8, 8)]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
 /// let l_shape = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)].map(|(x, y)| SubPoint::from_px(x, y));
@@ -342,7 +342,7 @@ impl<const C: usize, const D: usize> Prepared<C, D> {
 /// ```
 /// use softedge::{Band, BandBuffer, Line, RenderStyle, SubPoint};
 /// let band = Band::new(8, 0, 4);
-/// let (mut acc, mut cover) = ([0i32; 32], [0i32; 48]);
+/// let (mut acc, mut cover) = ([0i32; 32], [0i32; BandBuffer::<1>::cover_len(8, 4)]);
 /// let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
 /// buf.clear([0]);
 /// // Horizontal, on the boundary between rows 1 and 2: half in each.

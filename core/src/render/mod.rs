@@ -5,15 +5,18 @@
 //! fine: nothing is read back), a display [`Profile`] (the tone stage: γ
 //! table and pixel format, or dithering to 1 bit) and a drawing closure;
 //! gives the display one `fill_contiguous` per band over the band's
-//! rectangle, a DMA-friendly stream of rows.
+//! rectangle, a DMA-friendly stream of rows (a band nothing was drawn on,
+//! one `fill_solid` of the background's colour).
 //!
 //! Per band the renderer hands the closure a [`Canvas`] over the band (the
 //! closure is called once per band, so keep the scene in data it can read
-//! again), then streams the band through the profile: each pixel's one
-//! rounding to 12 bits, the profile's colour, and the accumulator reset to
-//! the background for the next band in the same pass (no separate clear).
-//! Rows that no shape touched are sent as the background's colour without
-//! being resolved, when the profile has a uniform colour for it.
+//! again), then makes the band's colours in its scratch and streams them
+//! from there: a pixel that an opaque flat colour covers whole gets that
+//! colour toned once for the band (its tag, see `band::tags`), any other
+//! its one rounding to 12 bits and the profile's colour; columns left and
+//! right of what a row holds besides the background get the background's
+//! colour, when the profile has one colour for it everywhere. Each pixel
+//! sent is reset to the background for the next band (no separate clear).
 //!
 //! [`Renderer::render_window`] redraws only a rectangle of the frame: bands
 //! of that width, one window set-up per band on the target; the shapes
@@ -24,10 +27,12 @@ use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::geometry::{OriginDimensions, Point, Size};
 use embedded_graphics_core::primitives::Rectangle;
 
-use crate::band::{BandBuffer, BandError, Bands};
+use crate::band::tags::{self, PALETTE};
+use crate::band::{resolve, BandBuffer, BandError, Bands};
 use crate::canvas::{Canvas, ShapeCache, ShapeEntry, Skipped, WalkCache, WalkSlot};
 use crate::color::IntoLinear;
 use crate::path::Segment as PathSegment;
+pub use crate::tone::format::RawColor;
 use crate::tone::profile::{Profile, ToneRow};
 
 /// Why a frame was not rendered, or not completely.
@@ -116,9 +121,11 @@ pub struct Renderer<'a, const C: usize> {
     width: u16,
     height: u16,
     band_rows: u16,
-    /// The accumulator is known to hold this background (it is reset to it
-    /// as each band is sent).
-    holds: Option<[u16; C]>,
+    /// The band storage is known to be clean (no cover changes, heads
+    /// reset, every tag the background's) for bands of this width and
+    /// height (its layout depends on both): the last band's flush left it
+    /// so.
+    clean: Option<(u16, u16)>,
     /// The shape cache's segments and entries, kept from frame to frame.
     shapes: Option<(&'a mut [PathSegment], &'a mut [ShapeEntry])>,
     /// The last frame's outlines found kept, and described into the cache.
@@ -161,7 +168,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
             width,
             height,
             band_rows: rows,
-            holds: None,
+            clean: None,
             shapes: None,
             shape_stats: (0, 0),
         })
@@ -216,6 +223,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
     ) -> Result<FrameReport, RenderError<D::Error, E>>
     where
         D: DrawTarget + OriginDimensions,
+        D::Color: RawColor,
         B: IntoLinear<C>,
         P: Profile<C, Color = D::Color>,
         F: FnMut(&mut Canvas<'_, '_, C, D::Color>) -> Result<(), E>,
@@ -246,6 +254,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
     ) -> Result<FrameReport, RenderError<D::Error, E>>
     where
         D: DrawTarget + OriginDimensions,
+        D::Color: RawColor,
         B: IntoLinear<C>,
         P: Profile<C, Color = D::Color>,
         F: FnMut(&mut Canvas<'_, '_, C, D::Color>) -> Result<(), E>,
@@ -273,6 +282,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
     ) -> Result<FrameReport, RenderError<D::Error, E>>
     where
         D: DrawTarget,
+        D::Color: RawColor,
         P: Profile<C, Color = D::Color>,
         F: FnMut(&mut Canvas<'_, '_, C, D::Color>) -> Result<(), E>,
     {
@@ -288,8 +298,8 @@ impl<'a, const C: usize> Renderer<'a, C> {
         let mut report = FrameReport::default();
         let mut failed: Option<(i32, E)> = None;
         for band in bands {
-            let mut buf = match self.holds {
-                Some(h) if h == bg && band.width == self.width => {
+            let mut buf = match self.clean {
+                Some(size) if size == (band.width, band.rows) => {
                     BandBuffer::reuse(&mut *self.acc, &mut *self.cover, band, bg)
                 }
                 _ => BandBuffer::new(&mut *self.acc, &mut *self.cover, band).map(|mut b| {
@@ -298,8 +308,8 @@ impl<'a, const C: usize> Renderer<'a, C> {
                 }),
             }
             .map_err(RenderError::Band)?;
-            // The band is cleared to `bg` when it is sent.
-            self.holds = None;
+            // The band's flush leaves it clean for the next.
+            self.clean = None;
             let mut canvas = Canvas::typed(&mut buf, Some(WalkCache::new(&mut *self.slots)))
                 .with_frame(self.width, self.height);
             if let Some((segments, entries)) = self.shapes.as_mut() {
@@ -321,7 +331,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
                 failed = Some((band.y0, e));
             }
             send(&mut buf, target, &mut *profile).map_err(RenderError::Target)?;
-            self.holds = (band.width == self.width).then_some(bg);
+            self.clean = Some((band.width, band.rows));
             report.bands += 1;
         }
         match failed {
@@ -331,8 +341,19 @@ impl<'a, const C: usize> Renderer<'a, C> {
     }
 }
 
-/// Sends a band through `profile` to `target` in one `fill_contiguous`,
-/// resetting the accumulator to the background as it goes.
+/// Sends a band through `profile` to `target` in one `fill_contiguous`
+/// (or one `fill_solid` when nothing was drawn on it and the background
+/// has one colour everywhere), leaving the band clean for the next:
+/// changes zero, heads reset, every tag the background's.
+///
+/// The band's colours are made row by row into its scratch of changes
+/// (`width * rows` words, all zero between shapes), as raw display bits:
+/// a pixel tagged with a palette entry gets the entry's colour, toned once
+/// for the band (see `band::tags`); the others are resolved (the one
+/// rounding), toned and packed one by one; columns left and right of a
+/// row's drawn extent get the background's. Every pixel sent is reset to
+/// the background. Then the run is streamed to the target from the
+/// slice, and zeroed.
 fn send<D, P, const C: usize>(
     buf: &mut BandBuffer<'_, C>,
     target: &mut D,
@@ -340,6 +361,7 @@ fn send<D, P, const C: usize>(
 ) -> Result<(), D::Error>
 where
     D: DrawTarget,
+    D::Color: RawColor,
     P: Profile<C, Color = D::Color>,
 {
     let band = buf.band();
@@ -347,176 +369,455 @@ where
         Point::new(band.x0, band.y0),
         Size::new(u32::from(band.width), u32::from(band.rows)),
     );
-    let uniform = profile.uniform(buf.background());
-    let parts = buf.flush_parts();
-    let mut rows = Segments {
-        acc: parts.acc,
-        extents: parts.extents,
-        bg: parts.background,
-        profile,
-        uniform,
-        x0: band.x0,
-        y: band.y0 - 1,
-        width: band.width,
-        rows_left: band.rows,
-        // A row is to start.
-        col: band.width,
-        dirty: 0..0,
-    };
-    let pixels = BandPixels {
-        seg: &mut [],
-        left: 0,
-        x: band.x0,
-        uniform,
-        rows: &mut rows,
-    };
-    target.fill_contiguous(&area, pixels)
-}
-
-/// A band's pixels in row order, through the profile; each pixel's
-/// accumulator reset to the background as it is read.
-///
-/// A row is up to three segments: columns nothing was drawn on left and
-/// right of its drawn extent, sent as the background's colour when the
-/// profile has one for every position (their accumulator already holds the
-/// background), and the drawn extent, resolved pixel by pixel. A pixel
-/// segment is its own count (the slice of its accumulator not sent yet),
-/// a uniform one a count down. Finding the next segment is the slow path,
-/// out of line and on its own state ([`Segments`]): the per-pixel state
-/// here never has its address taken, so the compiler keeps it in
-/// registers (the Cortex-M0 has eight low ones).
-struct BandPixels<'r, 'x, P: Profile<C>, const C: usize> {
-    /// The current pixel segment's accumulator not sent yet (empty in a
-    /// uniform segment).
-    seg: &'x mut [i32],
-    /// Pixels left in the current uniform segment (0 in a pixel segment).
-    left: u32,
-    /// Frame column of `seg`'s first pixel.
-    x: i32,
-    /// The colour of uniform pixels (a copy of `rows.uniform`, read here
-    /// from a register rather than through `rows`).
-    uniform: Option<P::Color>,
-    /// The band's segments after the current one (a local of [`send`]'s,
-    /// by reference: its address is taken by the slow path).
-    rows: &'r mut Segments<'x, P, C>,
-}
-
-/// One segment of a band row: its accumulator (pixels to resolve) or a
-/// count of uniform pixels, and the frame column it starts at.
-struct Segment<'x> {
-    acc: &'x mut [i32],
-    uniform: u32,
-    x: i32,
-}
-
-/// The band's rows cut into segments (see [`BandPixels`]).
-struct Segments<'x, P: Profile<C>, const C: usize> {
-    /// The band's accumulator after the current segment (rows are
-    /// contiguous).
-    acc: &'x mut [i32],
-    /// Per row, the drawn extent (see [`BandBuffer::flush_parts`]).
-    extents: crate::band::DrawnExtents<'x>,
-    bg: [i32; C],
-    profile: &'x mut P,
-    uniform: Option<P::Color>,
-    x0: i32,
-    /// Current frame row, and rows still to start.
-    y: i32,
-    width: u16,
-    rows_left: u16,
-    /// Band column where the next segment starts.
-    col: u16,
-    /// Drawn columns of the current row.
-    dirty: core::ops::Range<u16>,
-}
-
-impl<'x, P: Profile<C>, const C: usize> Segments<'x, P, C> {
-    /// The next non-empty segment (moving to the next row when the row is
-    /// done); `None` at the band's end.
-    #[cold]
-    #[inline(never)]
-    fn next_segment(&mut self) -> Option<Segment<'x>> {
-        loop {
-            if self.col >= self.width {
-                if self.rows_left == 0 {
-                    return None;
-                }
-                self.rows_left -= 1;
-                self.y += 1;
-                self.col = 0;
-                self.dirty = self.extents.take(self.y);
-                if self.uniform.is_none() {
-                    self.dirty = 0..self.width;
-                }
-                if !self.dirty.is_empty() {
-                    let n = usize::from(self.width) * C;
-                    if let Some(row) = self.acc.get(..n) {
-                        self.profile.start_row(&ToneRow::new(self.y, self.x0, row));
-                    }
-                }
-            }
-            let (pixels, end) = if self.col < self.dirty.start {
-                (false, self.dirty.start)
-            } else if self.col < self.dirty.end {
-                (true, self.dirty.end)
-            } else {
-                (false, self.width)
-            };
-            let n = end.saturating_sub(self.col);
-            let acc = core::mem::take(&mut self.acc);
-            let (seg, rest) = acc.split_at_mut((usize::from(n) * C).min(acc.len()));
-            self.acc = rest;
-            let x = self.x0 + i32::from(self.col);
-            self.col = end;
-            if n > 0 {
-                return Some(match (pixels, self.uniform) {
-                    // Those pixels' accumulator holds the background.
-                    (false, Some(_)) => Segment {
-                        acc: &mut [],
-                        uniform: u32::from(n),
-                        x,
-                    },
-                    _ => Segment {
-                        acc: seg,
-                        uniform: 0,
-                        x,
-                    },
-                });
-            }
+    let bg = buf.background();
+    let mut parts = buf.flush_parts();
+    let uniform = profile.uniform(bg);
+    if let Some(color) = uniform {
+        if parts.untouched() {
+            return target.fill_solid(&area, color);
         }
+    }
+    // The palette's colours, toned once; `known` marks the entries whose
+    // colour does not depend on the position.
+    let mut codes = [0u32; PALETTE];
+    let mut known = 0u32;
+    for (t, v) in parts.palette.entries().iter().enumerate() {
+        if let (Some(c), Some(code)) = (profile.uniform(v.map(resolve)), codes.get_mut(t)) {
+            *code = c.to_raw();
+            known |= 1 << t;
+        }
+    }
+    let (w, rows) = (usize::from(band.width), usize::from(band.rows));
+    let n = tags::row_words(w);
+    let bg_acc = parts.palette.entries().first().copied().unwrap_or([0; C]);
+    let dense = parts.palette.dense;
+    let bg_code = codes[0] as i32;
+    for r in 0..rows {
+        let y = band.y0 + r as i32;
+        let mut drawn = parts.take_drawn(r);
+        let row_words = r * n..r * n + n;
+        let (Some(out), Some(words), Some(acc)) = (
+            parts.out.get_mut(r * w..r * w + w),
+            parts.tags.get_mut(row_words),
+            parts.acc.get_mut(r * w * C..(r + 1) * w * C),
+        ) else {
+            continue;
+        };
+        if uniform.is_none() {
+            drawn = 0..band.width;
+        }
+        let drawn = usize::from(drawn.start)..usize::from(drawn.end);
+        if !drawn.is_empty() {
+            profile.start_row(&ToneRow::new(y, band.x0, acc));
+        }
+        if let Some(left) = out.get_mut(..drawn.start) {
+            left.fill(bg_code);
+        }
+        if let Some(right) = out.get_mut(drawn.end..) {
+            right.fill(bg_code);
+        }
+        let tone = RowTone {
+            codes: &codes,
+            known,
+            bg: bg_acc,
+            profile: &*profile,
+            x0: band.x0,
+            y,
+        };
+        tone.row(out, words, acc, drawn, dense);
+        words.fill(0);
+    }
+    let len = w * rows;
+    let out = parts.out.get_mut(..len).unwrap_or_default();
+    let sent = target.fill_contiguous(&area, out.iter().map(|&v| D::Color::from_raw(v as u32)));
+    out.fill(0);
+    sent
+}
+
+/// What toning a band row needs: the palette's colours (`known`: which of
+/// them do not depend on the position), the background in accumulator
+/// units (what every pixel sent is reset to), the profile, and the row's
+/// place.
+struct RowTone<'t, P, const C: usize> {
+    codes: &'t [u32; PALETTE],
+    known: u32,
+    bg: [i32; C],
+    profile: &'t P,
+    x0: i32,
+    y: i32,
+}
+
+impl<P: Profile<C>, const C: usize> RowTone<'_, P, C>
+where
+    P::Color: RawColor,
+{
+    /// The raw colours of the row's pixels `drawn` into `out`, from their
+    /// tag `words` and accumulator `acc`, which is reset to the background:
+    /// four pixels of the background at a time (they hold it), four of one
+    /// known palette entry, runs of `MIXED` words in a loop of their own;
+    /// other pixels one by one. A dense band's (every tag `MIXED`) row is
+    /// one run.
+    #[inline(never)]
+    fn row(
+        &self,
+        out: &mut [i32],
+        words: &[i32],
+        acc: &mut [i32],
+        drawn: core::ops::Range<usize>,
+        dense: bool,
+    ) {
+        if dense {
+            self.mixed(out, acc, drawn.start, drawn.end);
+            return;
+        }
+        let mut c = drawn.start;
+        while c < drawn.end {
+            let Some(&word) = words.get(c >> 2) else {
+                return;
+            };
+            if c & 3 == 0 && c + 4 <= drawn.end {
+                if word == tags::MIXED_WORD {
+                    // The run of MIXED words from here.
+                    let mut end = c + 4;
+                    while end + 4 <= drawn.end && words.get(end >> 2) == Some(&tags::MIXED_WORD) {
+                        end += 4;
+                    }
+                    self.mixed(out, acc, c, end);
+                    c = end;
+                    continue;
+                }
+                let t = word as u8;
+                if word == tags::splat(t) && self.is_known(t) {
+                    let code = self.codes[usize::from(t) & (PALETTE - 1)] as i32;
+                    if let Some(four) = out.get_mut(c..c + 4) {
+                        four.fill(code);
+                    }
+                    if t != 0 {
+                        let mut px = acc.get_mut(c * C..(c + 4) * C).unwrap_or_default();
+                        while let Some((p, rest)) =
+                            core::mem::take(&mut px).split_first_chunk_mut::<C>()
+                        {
+                            *p = self.bg;
+                            px = rest;
+                        }
+                    }
+                    c += 4;
+                    continue;
+                }
+            }
+            let t = (word >> ((c & 3) << 3)) as u8;
+            let code = self.take(acc, t, c);
+            if let Some(o) = out.get_mut(c) {
+                *o = code as i32;
+            }
+            c += 1;
+        }
+    }
+
+    /// The raw colours of pixels `c0..c1` from their values (every one
+    /// resolved and toned), each reset to the background.
+    #[inline(never)]
+    fn mixed(&self, out: &mut [i32], acc: &mut [i32], c0: usize, c1: usize) {
+        let (Some(out), Some(acc)) = (out.get_mut(c0..c1), acc.get_mut(c0 * C..c1 * C)) else {
+            return;
+        };
+        let mut x = self.x0.wrapping_add(c0 as i32);
+        for (o, px) in out.iter_mut().zip(acc.chunks_exact_mut(C)) {
+            if let Some(px) = px.first_chunk_mut::<C>() {
+                *o = self.profile.color(x, self.y, px.map(resolve)).to_raw() as i32;
+                *px = self.bg;
+            }
+            x = x.wrapping_add(1);
+        }
+    }
+
+    /// True when palette entry `t` has a colour for every position.
+    #[inline(always)]
+    fn is_known(&self, t: u8) -> bool {
+        (t as usize) < PALETTE && self.known >> t & 1 != 0
+    }
+
+    /// The raw colour of pixel `c`, tagged `t`: its entry's if known, else
+    /// its value resolved (the one rounding) and toned at its place; its
+    /// accumulator reset to the background (the background's pixels hold
+    /// it already).
+    #[inline(always)]
+    fn take(&self, acc: &mut [i32], t: u8, c: usize) -> u32 {
+        let Some(px) = acc
+            .get_mut(c * C..c * C + C)
+            .and_then(|p| p.first_chunk_mut::<C>())
+        else {
+            return 0;
+        };
+        if t == 0 && self.is_known(0) {
+            return self.codes[0];
+        }
+        let code = if self.is_known(t) {
+            self.codes[usize::from(t) & (PALETTE - 1)]
+        } else {
+            self.pixel(px, c)
+        };
+        *px = self.bg;
+        code
+    }
+
+    /// The raw colour of value `px` at pixel `c`: resolved (the one
+    /// rounding), toned at its place.
+    #[inline(always)]
+    fn pixel(&self, px: &[i32; C], c: usize) -> u32 {
+        self.profile
+            .color(self.x0.wrapping_add(c as i32), self.y, px.map(resolve))
+            .to_raw()
     }
 }
 
-impl<P: Profile<C>, const C: usize> Iterator for BandPixels<'_, '_, P, C> {
-    type Item = P::Color;
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use std::vec;
+    use std::vec::Vec;
 
-    #[inline]
-    fn next(&mut self) -> Option<P::Color> {
-        loop {
-            // A pixel of a pixel segment: its one rounding, its reset to
-            // the background, its colour. (The length is tested before the
-            // slice is taken, so a uniform pixel does not write it.)
-            if self.seg.len() >= C {
-                if let Some((px, rest)) =
-                    core::mem::take(&mut self.seg).split_first_chunk_mut::<C>()
-                {
-                    self.seg = rest;
-                    let x = self.x;
-                    self.x += 1;
-                    let mut lin = [0u16; C];
-                    for ch in 0..C {
-                        lin[ch] = crate::band::resolve(px[ch]);
-                        px[ch] = self.rows.bg[ch];
+    use embedded_graphics_core::pixelcolor::{Gray8, Rgb565};
+    use embedded_graphics_core::Pixel;
+
+    use super::*;
+    use crate::canvas::{Contour, MeshColors};
+    use crate::geom::FinePoint;
+    use crate::path::testing::Lcg;
+    use crate::raster::DrawError;
+    use crate::style::{Blend, FillRule, Gradient, Offset, Opacity, Stop};
+    use crate::tone::format::{Gray8Format, Rgb565Format, ToneFormat};
+    use crate::tone::{Bayer8, Curve};
+
+    /// A display that keeps what it is sent, in raw bits.
+    struct Capture<Col> {
+        w: u32,
+        h: u32,
+        px: Vec<u32>,
+        col: core::marker::PhantomData<Col>,
+    }
+
+    impl<Col> Capture<Col> {
+        fn new(w: u16, h: u16) -> Self {
+            Self {
+                w: u32::from(w),
+                h: u32::from(h),
+                px: vec![u32::MAX; usize::from(w) * usize::from(h)],
+                col: core::marker::PhantomData,
+            }
+        }
+    }
+
+    impl<Col> OriginDimensions for Capture<Col> {
+        fn size(&self) -> Size {
+            Size::new(self.w, self.h)
+        }
+    }
+
+    impl<Col: PixelColorRaw> DrawTarget for Capture<Col> {
+        type Color = Col;
+        type Error = core::convert::Infallible;
+        fn draw_iter<I: IntoIterator<Item = Pixel<Col>>>(
+            &mut self,
+            px: I,
+        ) -> Result<(), Self::Error> {
+            for Pixel(p, c) in px {
+                let k = p.y as usize * self.w as usize + p.x as usize;
+                self.px[k] = c.to_raw();
+            }
+            Ok(())
+        }
+    }
+
+    /// An embedded-graphics colour whose raw bits the capture keeps.
+    trait PixelColorRaw: embedded_graphics_core::pixelcolor::PixelColor + RawColor {}
+    impl<T: embedded_graphics_core::pixelcolor::PixelColor + RawColor> PixelColorRaw for T {}
+
+    /// A random scene: flat shapes opaque and translucent, over and added,
+    /// Gouraud meshes, gradients, pixels and spans through the canvas as a
+    /// `DrawTarget`, in up to 60 colours (more than a band's palette).
+    fn scene<const C: usize, Col>(
+        seed: u64,
+        w: u16,
+        h: u16,
+    ) -> impl FnMut(&mut Canvas<'_, '_, C, Col>) -> Result<(), DrawError>
+    where
+        Col: PixelColorRaw + crate::color::IntoLinear<C>,
+    {
+        move |c| {
+            let mut rng = Lcg(seed);
+            let colours = 1 + rng.below(60) as usize;
+            let shapes = 1 + rng.below(40);
+            let p = |rng: &mut Lcg| {
+                FinePoint::new(
+                    rng.below(u64::from(w) * 1024 + 2048) as i32 - 1024,
+                    rng.below(u64::from(h) * 1024 + 2048) as i32 - 1024,
+                )
+            };
+            let colour = |rng: &mut Lcg| -> [u16; C] {
+                let k = rng.below(colours as u64) as u16;
+                core::array::from_fn(|ch| (k * 67 + ch as u16 * 1001) % 4096)
+            };
+            for _ in 0..shapes {
+                let kind = rng.below(6);
+                let opacity = if rng.below(3) == 0 {
+                    Opacity::from_ratio(rng.below(255) as u32 + 1, 256)
+                } else {
+                    Opacity::OPAQUE
+                };
+                let blend = if rng.below(6) == 0 {
+                    Blend::Add
+                } else {
+                    Blend::Over
+                };
+                match kind {
+                    0 | 1 => {
+                        let n = 3 + rng.below(4) as usize;
+                        let pts: Vec<FinePoint> = (0..n).map(|_| p(&mut rng)).collect();
+                        let rule = if rng.below(2) == 0 {
+                            FillRule::NonZero
+                        } else {
+                            FillRule::EvenOdd
+                        };
+                        let col = colour(&mut rng);
+                        let _ = c.fill(&Contour(&pts), col, rule, blend, opacity);
                     }
-                    return Some(self.rows.profile.color(x, self.rows.y, lin));
+                    2 => {
+                        // An axis-aligned box on whole pixels: whole spans.
+                        let (x0, y0) = (
+                            rng.below(u64::from(w)) as i32,
+                            rng.below(u64::from(h)) as i32,
+                        );
+                        let (x1, y1) =
+                            (x0 + 1 + rng.below(12) as i32, y0 + 1 + rng.below(12) as i32);
+                        let f = |x, y| FinePoint::from_px(x, y);
+                        let col = colour(&mut rng);
+                        let _ = c.fill(
+                            &Contour(&[f(x0, y0), f(x1, y0), f(x1, y1), f(x0, y1)]),
+                            col,
+                            FillRule::NonZero,
+                            Blend::Over,
+                            Opacity::OPAQUE,
+                        );
+                    }
+                    3 => {
+                        let pts = [p(&mut rng), p(&mut rng), p(&mut rng), p(&mut rng)];
+                        let cols = [
+                            colour(&mut rng),
+                            colour(&mut rng),
+                            colour(&mut rng),
+                            colour(&mut rng),
+                        ];
+                        let _ = c.fill_mesh(
+                            &pts,
+                            &[[0, 1, 2], [0, 2, 3]],
+                            MeshColors::PerPoint(&cols),
+                            blend,
+                            opacity,
+                        );
+                    }
+                    4 => {
+                        let stops = [
+                            Stop::lin(Offset::ZERO, colour(&mut rng)),
+                            Stop::lin(Offset::ONE, colour(&mut rng)),
+                        ];
+                        if let Ok(g) = Gradient::linear(p(&mut rng), p(&mut rng), &stops) {
+                            let pts = [p(&mut rng), p(&mut rng), p(&mut rng)];
+                            let _ = c.fill_gradient(
+                                &Contour(&pts),
+                                &g,
+                                FillRule::NonZero,
+                                blend,
+                                opacity,
+                            );
+                        }
+                    }
+                    _ => {
+                        // e-g pixels and a solid fill through the canvas.
+                        let col = colour(&mut rng);
+                        let x = rng.below(u64::from(w)) as i32;
+                        let y = rng.below(u64::from(h)) as i32;
+                        let x1 = x + 1 + rng.below(9) as i32;
+                        c.buffer().store_span(x, x1, y, col);
+                        c.buffer().store_pixel(x, y + 1, colour(&mut rng));
+                    }
                 }
             }
-            if self.left > 0 {
-                self.left -= 1;
-                return self.uniform;
-            }
-            let next = self.rows.next_segment()?;
-            (self.seg, self.left, self.x) = (next.acc, next.uniform, next.x);
+            Ok(())
         }
+    }
+
+    /// The reference: the scene drawn into one band of the whole frame,
+    /// each pixel read back as linear 12 bits (the accumulator alone) and
+    /// toned by the profile's colour at its place.
+    fn reference<const C: usize, Col, P>(
+        seed: u64,
+        w: u16,
+        h: u16,
+        bg: [u16; C],
+        profile: &P,
+    ) -> Vec<u32>
+    where
+        Col: PixelColorRaw + crate::color::IntoLinear<C>,
+        P: Profile<C, Color = Col>,
+    {
+        let mut acc = vec![0; BandBuffer::<C>::acc_len(w, h)];
+        let mut cover = vec![0; BandBuffer::<C>::cover_len(w, h)];
+        let mut buf =
+            BandBuffer::<C>::new(&mut acc, &mut cover, crate::band::Band::new(w, 0, h)).unwrap();
+        buf.clear(bg);
+        let mut canvas: Canvas<'_, '_, C, Col> = Canvas::typed(&mut buf, None);
+        let _ = scene::<C, Col>(seed, w, h)(&mut canvas);
+        let mut out = Vec::new();
+        for y in 0..i32::from(h) {
+            for x in 0..i32::from(w) {
+                out.push(profile.color(x, y, buf.lin12(x, y).unwrap()).to_raw());
+            }
+        }
+        out
+    }
+
+    fn check<const C: usize, Col, P>(profile: &P, bg: [u16; C])
+    where
+        Col: PixelColorRaw + crate::color::IntoLinear<C>,
+        P: Profile<C, Color = Col> + Clone,
+    {
+        let mut rng = Lcg(0xf1a5_4ed5);
+        for case in 0..300u64 {
+            let (w, h) = (1 + rng.below(40) as u16, 1 + rng.below(30) as u16);
+            let rows = 1 + rng.below(9) as u16;
+            let seed = rng.next_u64();
+            let want = reference::<C, Col, P>(seed, w, h, bg, profile);
+            let mut acc = vec![0; BandBuffer::<C>::acc_len(w, rows)];
+            let mut cover = vec![0; BandBuffer::<C>::cover_len(w, rows)];
+            let mut slots = [crate::canvas::WalkSlot::<C>::EMPTY; 4];
+            let mut r = Renderer::<C>::new(&mut acc, &mut cover, &mut slots, w, h, rows).unwrap();
+            // Twice: the second frame starts from the storage the first
+            // left clean.
+            for frame in 0..2 {
+                let mut shown = Capture::<Col>::new(w, h);
+                r.render(&mut shown, profile.clone(), bg, scene::<C, Col>(seed, w, h))
+                    .unwrap();
+                assert!(
+                    shown.px == want,
+                    "case {case} frame {frame}: {w}x{h} in bands of {rows}"
+                );
+            }
+        }
+    }
+
+    /// The flush sends what the accumulator holds, bit for bit, whether a
+    /// pixel went out by its tag or was resolved, in bands that keep tags
+    /// and bands that went dense.
+    #[test]
+    fn the_flush_sends_the_bits_of_the_accumulator() {
+        static RGB565: Rgb565Format = Rgb565Format::new(Curve::Srgb);
+        static GRAY8: Gray8Format = Gray8Format::new(Curve::Srgb);
+        check::<3, Rgb565, _>(&&RGB565, [0; 3]);
+        check::<3, Rgb565, _>(&&RGB565, [2000, 30, 4095]);
+        check::<1, Gray8, _>(&&GRAY8, [700]);
+        check::<1, _, _>(&Bayer8::new(), [0]);
+        check::<1, _, _>(&Bayer8::new(), [1234]);
+        let _ = <Rgb565Format as ToneFormat<3>>::color;
     }
 }

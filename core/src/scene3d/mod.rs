@@ -53,7 +53,7 @@
 //! let light = Light::new(Vec3::from_int(1, 1, 1), [410], [3686]);
 //! let mut scratch = [ViewVertex::<1>::EMPTY; 114];
 //!
-//! let (mut acc, mut cover) = ([0i32; 32 * 32], [0i32; 36 * 32]);
+//! let (mut acc, mut cover) = ([0i32; 32 * 32], [0i32; BandBuffer::<1>::cover_len(32, 32)]);
 //! let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band::new(32, 0, 32)).unwrap();
 //! buf.clear([0]);
 //! let stats = project(&parts, &Transform::IDENTITY, &view, &light, &mut scratch, |t| {

@@ -23,7 +23,7 @@ pub trait ToneFormat<const C: usize> {
     /// The embedded-graphics colour of a pixel.
     #[cfg(feature = "embedded-graphics")]
     #[cfg_attr(docsrs, doc(cfg(feature = "embedded-graphics")))]
-    type Color: embedded_graphics_core::pixelcolor::PixelColor;
+    type Color: embedded_graphics_core::pixelcolor::PixelColor + RawColor;
 
     /// The code of one pixel (channels above 4095 are clamped).
     fn code(&self, px: [u16; C]) -> Self::Code;
@@ -32,6 +32,39 @@ pub trait ToneFormat<const C: usize> {
     #[cfg(feature = "embedded-graphics")]
     #[cfg_attr(docsrs, doc(cfg(feature = "embedded-graphics")))]
     fn color(&self, px: [u16; C]) -> Self::Color;
+}
+
+/// A display colour as the renderer's flush keeps it: its raw bits in a
+/// `u32` (a band's colours are made into the band's scratch, then
+/// streamed to the display from there). Every embedded-graphics colour
+/// type is one.
+#[cfg(feature = "embedded-graphics")]
+#[cfg_attr(docsrs, doc(cfg(feature = "embedded-graphics")))]
+pub trait RawColor: Copy {
+    /// The colour's raw bits.
+    fn to_raw(self) -> u32;
+    /// The colour of raw bits `raw` (as [`to_raw`](Self::to_raw) gave).
+    fn from_raw(raw: u32) -> Self;
+}
+
+#[cfg(feature = "embedded-graphics")]
+impl<T> RawColor for T
+where
+    T: embedded_graphics_core::pixelcolor::PixelColor + From<T::Raw>,
+    T::Raw: From<T>,
+    <T::Raw as embedded_graphics_core::pixelcolor::raw::RawData>::Storage: Into<u32>,
+{
+    #[inline]
+    fn to_raw(self) -> u32 {
+        use embedded_graphics_core::pixelcolor::raw::RawData;
+        T::Raw::from(self).into_inner().into()
+    }
+
+    #[inline]
+    fn from_raw(raw: u32) -> Self {
+        use embedded_graphics_core::pixelcolor::raw::RawData;
+        T::from(T::Raw::from_u32(raw))
+    }
 }
 
 /// Converts a row: `out[k] = format.code(row[k])` for as many pixels as the

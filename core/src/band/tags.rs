@@ -1,0 +1,285 @@
+//! Pixel tags and the band's palette: which pixels the flush can tone
+//! once per band instead of once per pixel.
+//!
+//! In a user interface most pixels of a band end up wholly covered by one
+//! opaque flat colour (the background, a panel, a disc's inside): their
+//! accumulator holds exactly that colour's `lin12 * 2^16` per channel.
+//! Beside its accumulator, every pixel keeps a one-byte *tag*: the index of
+//! its value in the band's [`Palette`] (at most [`PALETTE`] exact
+//! accumulator values per band, the background first), or [`MIXED`] when
+//! its value is anything else (an edge, a translucent composite, a Gouraud
+//! plane). So the flush gives a tagged pixel its entry's colour, toned
+//! once for the band, and resolves only the `MIXED` ones.
+//!
+//! The accumulator is always the pixel's value; a tag only says that it
+//! equals a palette entry. Whoever writes a pixel keeps its tag true: an
+//! opaque flat span tags its pixels with its colour's entry (a byte fill,
+//! four pixels a word), every other composite tags what it changes
+//! `MIXED`. Nothing is rounded differently: the bits of every frame are
+//! the accumulator's.
+//!
+//! Tags are packed four to an `i32` word of the caller's `cover` slice,
+//! little end first (pixel `c` of a row in word `c / 4`, bits
+//! `8 (c % 4) ..`), each band row starting a word.
+
+/// Entries of a band's palette.
+pub(crate) const PALETTE: usize = 32;
+/// The tag of a pixel whose accumulator holds its value.
+pub(crate) const MIXED: u8 = 0xff;
+/// A word of four `MIXED` tags.
+pub(crate) const MIXED_WORD: i32 = -1;
+
+/// Words of tags per band row of `w` pixels.
+#[inline]
+pub(crate) const fn row_words(w: usize) -> usize {
+    w.div_ceil(4)
+}
+
+/// A word of four tags `t`.
+#[inline]
+pub(crate) const fn splat(t: u8) -> i32 {
+    (t as u32).wrapping_mul(0x0101_0101) as i32
+}
+
+/// The tag of pixel `c` of a row's tag words.
+#[cfg(test)]
+pub(crate) fn get(words: &[i32], c: usize) -> u8 {
+    words
+        .get(c >> 2)
+        .map_or(MIXED, |&w| (w >> ((c & 3) << 3)) as u8)
+}
+
+/// Sets pixel `c`'s tag to `MIXED` (an or between a load and a store).
+#[inline(always)]
+pub(crate) fn set_mixed(words: &mut [i32], c: usize) {
+    if let Some(w) = words.get_mut(c >> 2) {
+        *w |= 0xff << ((c & 3) << 3);
+    }
+}
+
+/// Sets pixel `c`'s tag to `t`.
+#[cfg(test)]
+pub(crate) fn set(words: &mut [i32], c: usize, t: u8) {
+    if let Some(w) = words.get_mut(c >> 2) {
+        let s = (c & 3) << 3;
+        *w = (*w & !(0xff << s)) | (i32::from(t) << s);
+    }
+}
+
+/// Sets the tags of pixels `c0..c1` to `t`: the partial words at the ends
+/// by masks, the words between by stores (a loop of its own: a short run's
+/// few words do not pay a library fill's call). Out of line: once per run.
+#[inline(never)]
+pub(crate) fn fill(words: &mut [i32], c0: usize, c1: usize, t: u8) {
+    let c1 = c1.min(words.len() * 4);
+    if c0 >= c1 {
+        return;
+    }
+    let v = splat(t);
+    let (w0, w1) = (c0 >> 2, (c1 - 1) >> 2);
+    // Bits of the first and last words that the range holds.
+    let head = (-1i32) << ((c0 & 3) << 3);
+    let tail = (u32::MAX >> ((3 - ((c1 - 1) & 3)) << 3)) as i32;
+    let Some(row) = words.get_mut(w0..=w1) else {
+        return;
+    };
+    let [first, mid @ .., last] = row else {
+        if let Some(w) = row.first_mut() {
+            let m = head & tail;
+            *w = (*w & !m) | (v & m);
+        }
+        return;
+    };
+    *first = (*first & !head) | (v & head);
+    for w in mid {
+        *w = v;
+    }
+    *last = (*last & !tail) | (v & tail);
+}
+
+/// The exact accumulator values of a band's opaque flat colours (see the
+/// module's doc): entry 0 is the background.
+///
+/// A band whose shapes bring more flat colours than it has entries goes
+/// *dense*: every tag is set `MIXED`, and the band's shapes are composed
+/// into the accumulator alone from then on (what many small shapes of many
+/// colours, a scene of triangles, need: no tag to keep per pixel).
+#[derive(Debug, Clone)]
+pub(crate) struct Palette<const C: usize> {
+    acc: [[i32; C]; PALETTE],
+    len: u8,
+    /// Every tag of the band is `MIXED`, and stays so.
+    pub(crate) dense: bool,
+    /// An open hash of the entries: per slot, an entry's index + 1 (0:
+    /// empty), at [`hash`](Self::hash) of its value or past it.
+    index: [u8; SLOTS],
+}
+
+/// Slots of a palette's hash: twice its entries, so that probes are short.
+const SLOTS: usize = 2 * PALETTE;
+
+impl<const C: usize> Palette<C> {
+    /// Only `background` (accumulator units), as entry 0.
+    pub(crate) fn new(background: [i32; C]) -> Self {
+        let mut acc = [[0; C]; PALETTE];
+        acc[0] = background;
+        let mut index = [0; SLOTS];
+        index[Self::hash(&background)] = 1;
+        Self {
+            acc,
+            len: 1,
+            dense: false,
+            index,
+        }
+    }
+
+    /// The slot a value starts its probe at: its channels' 12-bit levels
+    /// folded by shifts and exclusive ors.
+    #[inline]
+    fn hash(v: &[i32; C]) -> usize {
+        let mut h = 0u32;
+        for &x in v {
+            h = (h << 3) ^ (h >> 7) ^ (x as u32 >> 12);
+        }
+        ((h ^ (h >> 6) ^ (h >> 12)) as usize) & (SLOTS - 1)
+    }
+
+    /// Entries in use.
+    pub(crate) fn len(&self) -> usize {
+        usize::from(self.len)
+    }
+
+    /// The tag of value `v` (accumulator units): its entry, made if there
+    /// is room; `None` when the palette is full (the caller then stores
+    /// the value in the accumulator and tags the pixel `MIXED`).
+    ///
+    /// A probe of the hash from the value's slot to an empty one: one
+    /// compare of a channel per entry met (the rest where that matches).
+    /// Out of line: once per shape and band.
+    #[inline(never)]
+    pub(crate) fn intern(&mut self, v: &[i32; C]) -> Option<u8> {
+        let mut h = Self::hash(v);
+        let first = v.first().copied().unwrap_or(0);
+        for _ in 0..SLOTS {
+            let k = usize::from(*self.index.get(h)?);
+            if k == 0 {
+                break;
+            }
+            let e = self.acc.get(k - 1)?;
+            if e.first().copied().unwrap_or(0) == first && e.iter().zip(v).all(|(a, b)| a == b) {
+                return Some((k - 1) as u8);
+            }
+            h = (h + 1) & (SLOTS - 1);
+        }
+        let n = self.len();
+        let slot = self.acc.get_mut(n)?;
+        *slot = *v;
+        self.len += 1;
+        if let Some(i) = self.index.get_mut(h) {
+            *i = n as u8 + 1;
+        }
+        Some(n as u8)
+    }
+
+    /// The value of entry `t`; `None` for `MIXED` (and an unused entry).
+    #[cfg(test)]
+    pub(crate) fn value(&self, t: u8) -> Option<&[i32; C]> {
+        if t >= self.len {
+            return None;
+        }
+        self.acc.get(usize::from(t))
+    }
+
+    /// The entries in use.
+    pub(crate) fn entries(&self) -> &[[i32; C]] {
+        self.acc.get(..self.len()).unwrap_or_default()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use std::vec::Vec;
+
+    /// `fill` against a byte-by-byte reference, over every range of a
+    /// 3-word row and every prior content pattern of interest.
+    #[test]
+    fn fill_sets_exactly_the_range() {
+        for c0 in 0..12 {
+            for c1 in c0..=12 {
+                for before in [0i32, -1, 0x1234_5678] {
+                    let mut words = [before; 3];
+                    fill(&mut words, c0, c1, 7);
+                    let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+                    let old: Vec<u8> = [before; 3].iter().flat_map(|w| w.to_le_bytes()).collect();
+                    for c in 0..12 {
+                        let want = if (c0..c1).contains(&c) { 7 } else { old[c] };
+                        assert_eq!(bytes[c], want, "{c0}..{c1}, before {before:#x}, pixel {c}");
+                        assert_eq!(get(&words, c), want);
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn set_and_set_mixed_touch_one_pixel() {
+        let mut words = [0i32; 2];
+        set(&mut words, 5, 3);
+        set_mixed(&mut words, 2);
+        for c in 0..8 {
+            let want = match c {
+                5 => 3,
+                2 => MIXED,
+                _ => 0,
+            };
+            assert_eq!(get(&words, c), want);
+        }
+        set(&mut words, 2, 1);
+        assert_eq!(get(&words, 2), 1);
+        // Past the row: MIXED read, writes dropped.
+        assert_eq!(get(&words, 8), MIXED);
+        set(&mut words, 9, 1);
+        fill(&mut words, 6, 20, 4);
+        assert_eq!(get(&words, 7), 4);
+    }
+
+    /// Interning against a list searched in full, over values that share
+    /// channels and slots: the same tags, each value once.
+    #[test]
+    fn interning_finds_every_entry_once() {
+        let mut rng = crate::path::testing::Lcg(0x7a95);
+        for _ in 0..500 {
+            let mut p = Palette::<3>::new([0, 0, 0]);
+            let mut seen: Vec<[i32; 3]> = Vec::from([[0, 0, 0]]);
+            for _ in 0..3 * PALETTE {
+                let v = [0, 1, 2].map(|_| (rng.below(4) as i32) << 16);
+                let want = match seen.iter().position(|e| *e == v) {
+                    Some(k) => Some(k as u8),
+                    None if seen.len() < PALETTE => {
+                        seen.push(v);
+                        Some((seen.len() - 1) as u8)
+                    }
+                    None => None,
+                };
+                assert_eq!(p.intern(&v), want, "{v:?}");
+            }
+            assert_eq!(p.entries(), &seen[..]);
+        }
+    }
+
+    #[test]
+    fn the_palette_interns_until_full() {
+        let mut p = Palette::<3>::new([5, 6, 7]);
+        assert_eq!(p.intern(&[5, 6, 7]), Some(0));
+        for k in 1..PALETTE {
+            assert_eq!(p.intern(&[k as i32, 0, 0]), Some(k as u8));
+        }
+        assert_eq!(p.intern(&[1, 0, 0]), Some(1));
+        assert_eq!(p.intern(&[-1, 0, 0]), None);
+        assert_eq!(p.value(1), Some(&[1, 0, 0]));
+        assert_eq!(p.value(MIXED), None);
+        assert_eq!(p.entries().len(), PALETTE);
+    }
+}
