@@ -19,7 +19,10 @@
 //!
 //! Rejected shapes (a vertex outside the coordinate range, too many
 //! vertices for a Gouraud polygon) are not drawn, counted, and the first
-//! reason kept ([`Canvas::skipped`]): the rest of the frame is drawn.
+//! reason kept ([`Canvas::skipped`]): the rest of the frame is drawn. The
+//! canvas's methods also return the rejection; the styled shapes of
+//! [`draw`](crate::draw) return `Ok` (the record names the shape), so a
+//! drawing closure can `?` them without stopping the band.
 
 mod cache;
 mod gradient;
@@ -350,6 +353,13 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         self.buf
     }
 
+    /// The record of skipped shapes, for the styled shapes of
+    /// [`draw`](crate::draw) to name theirs ([`DrawError::of_shape`]).
+    #[cfg(feature = "embedded-graphics")]
+    pub(crate) fn skipped_mut(&mut self) -> &mut Skipped {
+        &mut self.skipped
+    }
+
     /// Counts a shape that was rejected.
     fn skip(&mut self, serial: u32, e: DrawError) {
         self.skipped.count += 1;
@@ -379,7 +389,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
     /// let p = |x, y| FinePoint::from_px(x, y);
     /// let square = [p(0, 0), p(2, 0), p(2, 2), p(0, 2)];
     /// canvas
-    ///     .fill(&Contour(&square), [3000], FillRule::NonZero, Blend::Over, Opacity::from_ratio(1, 2))
+    ///     .fill(&Contour(&square), [3000], FillRule::NonZero, Blend::Over, Opacity::from_percent(50))
     ///     .unwrap();
     /// // Half of 3000 over 1000: the linear midpoint.
     /// assert_eq!(canvas.buffer().lin12(1, 1), Some([2000]));

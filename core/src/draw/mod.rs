@@ -32,7 +32,7 @@
 //!     .into_styled(AaStyle::with_fill(Rgb888::new(0, 128, 255)))
 //!     .draw(&mut canvas)?;
 //! Line::new(Point::new(0, 10), Point::new(19, 10))
-//!     .into_styled(AaStyle::with_stroke(Rgb888::WHITE, 3).opacity(Opacity::from_ratio(1, 2)))
+//!     .into_styled(AaStyle::with_stroke(Rgb888::WHITE, 3).opacity(Opacity::from_percent(50)))
 //!     .draw(&mut canvas)?;
 //! # Ok::<(), softedge::DrawError>(())
 //! ```
@@ -46,6 +46,7 @@ use embedded_graphics_core::pixelcolor::PixelColor;
 
 use crate::canvas::Canvas;
 use crate::color::IntoLinear;
+use crate::error::ShapeKind;
 use crate::path::{Dash, LineCap, LineJoin, MiterLimit, StrokeAlignment, StrokeStyle};
 use crate::raster::DrawError;
 use crate::style::{Blend, FillRule, Gradient, Opacity};
@@ -68,7 +69,7 @@ use crate::style::{Blend, FillRule, Gradient, Opacity};
 /// const NEEDLE: AaStyle<'static, Rgb565> = AaStyle::with_stroke(Rgb565::RED, 3)
 ///     .cap(LineCap::Round)
 ///     .join(LineJoin::Round)
-///     .opacity(Opacity::from_ratio(3, 4));
+///     .opacity(Opacity::from_percent(75));
 /// assert_eq!(NEEDLE.stroke.width, 3 * 1024);
 /// assert!(NEEDLE.fill_color.is_none());
 /// ```
@@ -223,14 +224,57 @@ impl<Col: PixelColor> From<PrimitiveStyle<Col>> for AaStyle<'static, Col> {
 /// `DrawTarget`): a primitive with an [`AaStyle`] (colours the canvas
 /// converts) or an [`AaGradient`] (a gradient of the canvas's channels).
 ///
-/// A rejected shape (coordinates outside the range, a stroke too wide) is
-/// not drawn, counted in the canvas's [`skipped`](Canvas::skipped) and
-/// returned; the renderer reports it after the frame. Fill and stroke are
-/// both tried; the first error is returned.
+/// **`draw` returns `Ok` for every shape**, so `?` in a drawing closure
+/// never stops the frame. A shape the canvas rejects (a point outside
+/// the ±2048 px range, a dash pattern of too many intervals) is not
+/// drawn: it is counted in the canvas's [`skipped`](Canvas::skipped),
+/// the first one named ([`DrawError::OutOfRange`]: its kind and the point,
+/// in px) with its place in the drawing order, and the renderer returns
+/// that record with the frame ([`FrameReport`](crate::render::FrameReport)),
+/// every other shape drawn. Fill and stroke are each a shape of their
+/// own. The `Result` is kept for embedded-graphics' idiom (`Drawable`
+/// returns one) and for errors a future style may find before drawing.
+///
+/// ```
+/// use embedded_graphics::pixelcolor::Rgb565;
+/// use embedded_graphics::prelude::*;
+/// use embedded_graphics::primitives::Circle;
+/// use softedge::prelude::*;
+/// # use softedge::{Band, BandBuffer};
+/// # let (mut acc, mut cover) = ([0i32; 3 * 400], [0i32; 480]);
+/// # let mut buf = BandBuffer::<3>::new(&mut acc, &mut cover, Band::new(20, 0, 20)).unwrap();
+/// # buf.clear([0; 3]);
+/// # let mut canvas: Canvas<'_, '_, 3, Rgb565> = Canvas::typed(&mut buf, None);
+/// let style = AaStyle::with_fill(Rgb565::BLUE);
+/// Circle::new(Point::new(5000, 0), 8).into_styled(style).draw(&mut canvas)?; // rejected: Ok
+/// Circle::new(Point::new(2, 2), 8).into_styled(style).draw(&mut canvas)?; // drawn
+/// let (at, why) = canvas.skipped().first.unwrap();
+/// assert_eq!(at, 0);
+/// // "circle reaches (4999.9844, -0.0156) px, outside ±2048 px": a corner
+/// // of the box of what it draws (the area-true polygon reaches a hair
+/// // beyond the circle).
+/// assert!(why.to_string().starts_with("circle reaches (4999.98"));
+/// # Ok::<(), DrawError>(())
+/// ```
 pub trait AaDrawable<const C: usize> {
     /// Draws into `canvas`, whose band may hold only part of the shape
-    /// (the rest is drawn in the other bands).
+    /// (the rest is drawn in the other bands). `Ok` whether or not the
+    /// canvas took the shape (see the trait's docs).
     fn draw<D>(&self, canvas: &mut Canvas<'_, '_, C, D>) -> Result<(), DrawError>;
+}
+
+/// Names the first rejection of the frame's band by `kind` when it was
+/// recorded by the shape just drawn (`clean`: none was recorded before).
+fn name_rejection<const C: usize, D>(
+    canvas: &mut Canvas<'_, '_, C, D>,
+    clean: bool,
+    kind: ShapeKind,
+) {
+    if clean {
+        if let Some((_, e)) = &mut canvas.skipped_mut().first {
+            *e = e.of_shape(kind);
+        }
+    }
 }
 
 impl<P: AaShape, Col: Copy + IntoLinear<C>, const C: usize> AaDrawable<C>
@@ -239,17 +283,20 @@ impl<P: AaShape, Col: Copy + IntoLinear<C>, const C: usize> AaDrawable<C>
     fn draw<D>(&self, canvas: &mut Canvas<'_, '_, C, D>) -> Result<(), DrawError> {
         let s = &self.style;
         let shape = self.primitive.shape();
-        let fill = match s.fill_color {
-            Some(c) => canvas.fill_shape(&shape, c.into_linear(), s.fill_rule, s.blend, s.opacity),
-            None => Ok(()),
-        };
-        let stroke = match s.stroke_color {
+        let clean = canvas.skipped().first.is_none();
+        // A rejection is recorded by the canvas (and named below): the
+        // results are not returned (see `AaDrawable`).
+        if let Some(c) = s.fill_color {
+            let _ = canvas.fill_shape(&shape, c.into_linear(), s.fill_rule, s.blend, s.opacity);
+        }
+        match s.stroke_color {
             Some(c) if s.stroke.width > 0 => {
-                canvas.stroke_shape(&shape, &s.stroke, c.into_linear(), s.blend, s.opacity)
+                let _ = canvas.stroke_shape(&shape, &s.stroke, c.into_linear(), s.blend, s.opacity);
             }
-            _ => Ok(()),
-        };
-        fill.and(stroke)
+            _ => {}
+        }
+        name_rejection(canvas, clean, P::KIND);
+        Ok(())
     }
 }
 
@@ -345,9 +392,13 @@ impl<P: AaShape, const C: usize> AaDrawable<C> for Styled<P, AaGradient<'_, C>> 
     fn draw<D>(&self, canvas: &mut Canvas<'_, '_, C, D>) -> Result<(), DrawError> {
         let s = &self.style;
         let shape = self.primitive.shape();
-        match &s.stroke {
+        let clean = canvas.skipped().first.is_none();
+        // Recorded by the canvas when rejected (see `AaDrawable`).
+        let _ = match &s.stroke {
             None => canvas.fill_shape_gradient(&shape, s.gradient, s.fill_rule, s.blend, s.opacity),
             Some(st) => canvas.stroke_shape_gradient(&shape, st, s.gradient, s.blend, s.opacity),
-        }
+        };
+        name_rejection(canvas, clean, P::KIND);
+        Ok(())
     }
 }

@@ -7,6 +7,7 @@ use embedded_graphics::primitives as eg;
 use embedded_graphics_core::geometry::{Dimensions, Point, Size};
 
 use crate::canvas::paths::shape_bounds;
+use crate::error::ShapeKind;
 use crate::geom::{FinePoint, FINE_BITS};
 use crate::path::{self, svg::SvgPath, Shape};
 
@@ -17,6 +18,9 @@ pub trait AaShape {
     where
         Self: 's;
 
+    /// Its kind, as errors name it.
+    const KIND: ShapeKind;
+
     /// The shape of this primitive.
     fn shape(&self) -> Self::Shape<'_>;
 }
@@ -24,9 +28,10 @@ pub trait AaShape {
 /// embedded-graphics primitives: their geometry in continuous coordinates
 /// (see [`path::eg`]).
 macro_rules! eg_shape {
-    ($($eg:ty => $shape:ty),* $(,)?) => {$(
+    ($($eg:ty => $shape:ty, $kind:ident);* $(;)?) => {$(
         impl AaShape for $eg {
             type Shape<'s> = $shape;
+            const KIND: ShapeKind = ShapeKind::$kind;
             fn shape(&self) -> $shape {
                 (*self).into()
             }
@@ -35,13 +40,13 @@ macro_rules! eg_shape {
 }
 
 eg_shape! {
-    eg::Circle => path::Circle,
-    eg::Ellipse => path::Ellipse,
-    eg::Arc => path::Arc,
-    eg::Sector => path::Sector,
-    eg::Rectangle => path::Rectangle,
-    eg::RoundedRectangle => path::RoundedRectangle,
-    eg::Line => path::Line,
+    eg::Circle => path::Circle, Circle;
+    eg::Ellipse => path::Ellipse, Ellipse;
+    eg::Arc => path::Arc, Arc;
+    eg::Sector => path::Sector, Sector;
+    eg::Rectangle => path::Rectangle, Rectangle;
+    eg::RoundedRectangle => path::RoundedRectangle, RoundedRectangle;
+    eg::Line => path::Line, Line;
 }
 
 impl<'a> AaShape for eg::Polyline<'a> {
@@ -49,6 +54,7 @@ impl<'a> AaShape for eg::Polyline<'a> {
         = path::Polyline<'a, Point>
     where
         Self: 's;
+    const KIND: ShapeKind = ShapeKind::Polyline;
     fn shape(&self) -> path::Polyline<'a, Point> {
         (*self).into()
     }
@@ -56,6 +62,7 @@ impl<'a> AaShape for eg::Polyline<'a> {
 
 impl AaShape for eg::Triangle {
     type Shape<'s> = path::Polygon<'s, Point>;
+    const KIND: ShapeKind = ShapeKind::Triangle;
     /// The triangle through the vertices' pixel centres.
     fn shape(&self) -> path::Polygon<'_, Point> {
         path::Polygon::new(&self.vertices)
@@ -64,9 +71,10 @@ impl AaShape for eg::Triangle {
 
 /// softedge's shapes stand for themselves.
 macro_rules! own_shape {
-    ($($t:ty),* $(,)?) => {$(
+    ($($t:ty => $kind:ident),* $(,)?) => {$(
         impl AaShape for $t {
             type Shape<'s> = Self where Self: 's;
+            const KIND: ShapeKind = ShapeKind::$kind;
             fn shape(&self) -> Self {
                 *self
             }
@@ -85,18 +93,18 @@ macro_rules! own_shape {
 }
 
 own_shape!(
-    path::Circle,
-    path::Ellipse,
-    path::Arc,
-    path::Sector,
-    path::Rectangle,
-    path::RoundedRectangle,
-    path::Line,
-    path::Polyline<'_, FinePoint>,
-    path::Polyline<'_, Point>,
-    path::Polygon<'_, FinePoint>,
-    path::Polygon<'_, Point>,
-    SvgPath<'_>,
+    path::Circle => Circle,
+    path::Ellipse => Ellipse,
+    path::Arc => Arc,
+    path::Sector => Sector,
+    path::Rectangle => Rectangle,
+    path::RoundedRectangle => RoundedRectangle,
+    path::Line => Line,
+    path::Polyline<'_, FinePoint> => Polyline,
+    path::Polyline<'_, Point> => Polyline,
+    path::Polygon<'_, FinePoint> => Polygon,
+    path::Polygon<'_, Point> => Polygon,
+    SvgPath<'_> => Path,
 );
 
 /// The whole pixels around a shape's description (empty at the origin for

@@ -35,6 +35,18 @@ pub enum Blend {
     Add,
 }
 
+/// Why an [`Opacity`] could not be made.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
+pub enum OpacityError {
+    /// [`Opacity::from_ratio`] with a zero denominator.
+    ZeroDenominator {
+        /// The numerator given.
+        num: u32,
+    },
+}
+
 /// Opacity in 1/4096: `Opacity::OPAQUE` is 4096.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -57,13 +69,50 @@ impl Opacity {
         Self(((v as u32 * 8192 + 255) / 510) as u16)
     }
 
-    /// From a fraction `num / den` (rounded, clamped to `0..=1`; a zero
-    /// `den` is opaque).
-    pub const fn from_ratio(num: u32, den: u32) -> Self {
-        if den == 0 || num >= den {
+    /// From a fraction `num / den` (`round(4096 num / den)`, clamped to
+    /// `0..=1`); a zero `den` is an error, not an opacity.
+    ///
+    /// ```
+    /// use softedge::style::{Opacity, OpacityError};
+    /// assert_eq!(Opacity::from_ratio(1, 2)?.to_4096ths(), 2048);
+    /// assert_eq!(Opacity::from_ratio(3, 2)?, Opacity::OPAQUE);
+    /// let e = Opacity::from_ratio(1, 0).unwrap_err();
+    /// assert_eq!(e, OpacityError::ZeroDenominator { num: 1 });
+    /// assert_eq!(e.to_string(), "opacity 1/0: the denominator is zero");
+    /// // In a `const`, where `?` is not available:
+    /// const THREE_QUARTERS: Opacity = match Opacity::from_ratio(3, 4) {
+    ///     Ok(o) => o,
+    ///     Err(_) => Opacity::OPAQUE,
+    /// };
+    /// # Ok::<(), OpacityError>(())
+    /// ```
+    pub const fn from_ratio(num: u32, den: u32) -> Result<Self, OpacityError> {
+        if den == 0 {
+            return Err(OpacityError::ZeroDenominator { num });
+        }
+        if num >= den {
+            return Ok(Self::OPAQUE);
+        }
+        Ok(Self(
+            ((num as u64 * 8192 + den as u64) / (2 * den as u64)) as u16,
+        ))
+    }
+
+    /// From a percentage, `100` opaque (`round(4096 p / 100)`, clamped to
+    /// `0..=100`): the infallible `const` form of
+    /// [`from_ratio`](Self::from_ratio)`(p, 100)`.
+    ///
+    /// ```
+    /// use softedge::style::Opacity;
+    /// const HALF: Opacity = Opacity::from_percent(50);
+    /// assert_eq!(HALF.to_4096ths(), 2048);
+    /// assert_eq!(Opacity::from_percent(250), Opacity::OPAQUE);
+    /// ```
+    pub const fn from_percent(p: u8) -> Self {
+        if p >= 100 {
             return Self::OPAQUE;
         }
-        Self(((num as u64 * 8192 + den as u64) / (2 * den as u64)) as u16)
+        Self(((p as u32 * 8192 + 100) / 200) as u16)
     }
 
     /// The value in 1/4096.
@@ -92,8 +141,23 @@ mod tests {
         assert_eq!(Opacity::from_u8(255), Opacity::OPAQUE);
         assert_eq!(Opacity::from_u8(0), Opacity::TRANSPARENT);
         assert_eq!(Opacity::from_u8(128).to_4096ths(), 2056);
-        assert_eq!(Opacity::from_ratio(1, 2).to_4096ths(), 2048);
-        assert_eq!(Opacity::from_ratio(3, 2), Opacity::OPAQUE);
+        assert_eq!(Opacity::from_ratio(1, 2).unwrap().to_4096ths(), 2048);
+        assert_eq!(Opacity::from_ratio(3, 2), Ok(Opacity::OPAQUE));
+        assert_eq!(
+            Opacity::from_ratio(7, 0),
+            Err(OpacityError::ZeroDenominator { num: 7 })
+        );
+        // round(4096 p / 100) in f64, every percentage.
+        for p in 0..=255u8 {
+            let exact = (4096.0 * f64::from(p.min(100)) / 100.0).round() as u16;
+            assert_eq!(Opacity::from_percent(p).to_4096ths(), exact, "{p} %");
+            if p <= 100 {
+                assert_eq!(
+                    Ok(Opacity::from_percent(p)),
+                    Opacity::from_ratio(u32::from(p), 100)
+                );
+            }
+        }
         assert_eq!(Opacity::from_4096ths(9999), Opacity::OPAQUE);
     }
 }
