@@ -168,7 +168,7 @@ fn a_rejected_shape_leaves_every_other_shape_drawn_whatever_the_closure_does_wit
         let (x, y) = point.split_once(", ").unwrap();
         let (x, y): (f64, f64) = (x.parse().unwrap(), y.parse().unwrap());
         assert!(
-            (x - near.0).abs() <= 8.0 && (y - near.1).abs() <= 8.0,
+            (x - near.0).abs() <= 10.0 && (y - near.1).abs() <= 10.0,
             "{message}"
         );
     }

@@ -39,7 +39,7 @@
 
 mod shapes;
 
-pub use shapes::AaShape;
+pub use shapes::{eg_stroke, AaShape};
 
 use embedded_graphics::primitives::{PrimitiveStyle, Styled};
 use embedded_graphics_core::pixelcolor::PixelColor;
@@ -59,6 +59,32 @@ use crate::style::{Blend, FillRule, Gradient, Opacity};
 /// ([`with_fill`](Self::with_fill), [`with_stroke`](Self::with_stroke),
 /// then the chained setters), or converted from one
 /// (`AaStyle::from(style)`: the same colours, width and alignment).
+///
+/// On embedded-graphics' primitives a stroke of whole pixels lights the
+/// pixels embedded-graphics lights where its edges are exact
+/// (axis-aligned, integer geometry; see [`eg_stroke`]): a 1-px stroke of
+/// a `Rectangle` is one whole pixel wide, not two half-bright ones.
+///
+/// **Half-pixel conventions.** `Circle::with_center(p, d)` with an even
+/// `d` sits half a pixel right of and below pixel `p`'s centre
+/// (embedded-graphics puts its corner at `p - (d - 1) / 2`), which
+/// aliased drawing hid. To centre a circle on a pixel, use an odd `d`, or
+/// softedge's circle: `path::Circle::new(FinePoint::centre_of(p.x, p.y),
+/// d * 512)` (radius in 1/1024 px):
+///
+/// ```
+/// use embedded_graphics::prelude::*;
+/// use embedded_graphics::primitives::Circle;
+/// use softedge::geom::FinePoint;
+/// use softedge::path;
+/// let p = Point::new(20, 20);
+/// let eg: path::Circle = Circle::with_center(p, 10).into();
+/// assert_eq!(eg.centre, FinePoint::from_px(21, 21)); // half a pixel off
+/// let centred = path::Circle::new(FinePoint::centre_of(p.x, p.y), 10 * 512);
+/// assert_eq!(centred.centre, FinePoint::new(20 * 1024 + 512, 20 * 1024 + 512));
+/// let odd: path::Circle = Circle::with_center(p, 11).into();
+/// assert_eq!(odd.centre, centred.centre);
+/// ```
 ///
 /// ```
 /// use embedded_graphics::pixelcolor::Rgb565;
@@ -147,10 +173,21 @@ impl<'a, Col: Copy> AaStyle<'a, Col> {
         self
     }
 
-    /// Which side of a closed outline the stroke lies on (open ones are
-    /// always centred).
-    pub const fn stroke_alignment(mut self, alignment: StrokeAlignment) -> Self {
-        self.stroke.alignment = alignment;
+    /// Which side of a closed outline the stroke lies on:
+    /// embedded-graphics' `StrokeAlignment` (`Inside`, `Center`,
+    /// `Outside`) or softedge's [`StrokeAlignment`]. On embedded-graphics'
+    /// primitives a stroke of whole pixels lies on the pixels
+    /// embedded-graphics lights (see [`eg_stroke`]).
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use embedded_graphics::primitives::StrokeAlignment;
+    /// use softedge::prelude::*;
+    /// let style = AaStyle::with_stroke(BinaryColor::On, 1).stroke_alignment(StrokeAlignment::Inside);
+    /// assert_eq!(style.stroke.alignment, softedge::path::StrokeAlignment::Inside);
+    /// ```
+    pub fn stroke_alignment(mut self, alignment: impl Into<StrokeAlignment>) -> Self {
+        self.stroke.alignment = alignment.into();
         self
     }
 
@@ -215,7 +252,7 @@ impl<Col: PixelColor> From<PrimitiveStyle<Col>> for AaStyle<'static, Col> {
         }
         style
             .stroke_width(s.stroke_width)
-            .stroke_alignment(s.stroke_alignment.into())
+            .stroke_alignment(s.stroke_alignment)
     }
 }
 
@@ -291,7 +328,8 @@ impl<P: AaShape, Col: Copy + IntoLinear<C>, const C: usize> AaDrawable<C>
         }
         match s.stroke_color {
             Some(c) if s.stroke.width > 0 => {
-                let _ = canvas.stroke_shape(&shape, &s.stroke, c.into_linear(), s.blend, s.opacity);
+                let (on, stroke) = self.primitive.stroked(&s.stroke);
+                let _ = canvas.stroke_shape(&on, &stroke, c.into_linear(), s.blend, s.opacity);
             }
             _ => {}
         }
@@ -396,7 +434,10 @@ impl<P: AaShape, const C: usize> AaDrawable<C> for Styled<P, AaGradient<'_, C>> 
         // Recorded by the canvas when rejected (see `AaDrawable`).
         let _ = match &s.stroke {
             None => canvas.fill_shape_gradient(&shape, s.gradient, s.fill_rule, s.blend, s.opacity),
-            Some(st) => canvas.stroke_shape_gradient(&shape, st, s.gradient, s.blend, s.opacity),
+            Some(st) => {
+                let (on, stroke) = self.primitive.stroked(st);
+                canvas.stroke_shape_gradient(&on, &stroke, s.gradient, s.blend, s.opacity)
+            }
         };
         name_rejection(canvas, clean, P::KIND);
         Ok(())
