@@ -46,7 +46,7 @@ use crate::path::SegmentSink;
 use crate::pixel_model::{walk_bed_of_nails, walk_circular, walk_hex19, walk_hex7, CircularFilter};
 use crate::raster::{DrawError, PixelModel, RenderStyle};
 use crate::shade::Plane;
-use crate::style::{Blend, FillRule, Opacity};
+use crate::style::{Blend, Edges, FillRule, Opacity};
 
 /// A box in fine units, `x0..x1` by `y0..y1` (half-open).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -191,6 +191,8 @@ pub struct Canvas<'c, 'b, const C: usize, Col = [u16; C]> {
     shapes: Option<ShapeCache<'c>>,
     serial: u32,
     style: RenderStyle,
+    /// How the next outlines' edge pixels are drawn (1-bit displays).
+    edges: Edges,
     skipped: Skipped,
     /// The whole frame, for embedded-graphics' clipping.
     frame: (u16, u16),
@@ -292,6 +294,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             shapes: None,
             serial: 0,
             style: RenderStyle::default(),
+            edges: Edges::Smooth,
             skipped: Skipped::default(),
             frame,
             reach: Reach::of(band),
@@ -336,6 +339,22 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
     /// exact area by default).
     pub fn set_style(&mut self, style: RenderStyle) {
         self.style = style;
+    }
+
+    /// How the edge pixels of every following outline (shapes, strokes,
+    /// paths, text; not triangles and meshes) are drawn: exact coverage
+    /// ([`Edges::Smooth`], the default) or sharpened for a 1-bit display
+    /// (see [`Edges`]). A styled shape's own
+    /// [`AaStyle::edges`](crate::draw::AaStyle::edges) sets it for that
+    /// shape; set it around text: `canvas.set_edges(Edges::Crisp);
+    /// text.draw(canvas)?; canvas.set_edges(Edges::Smooth);`.
+    pub fn set_edges(&mut self, edges: Edges) {
+        self.edges = edges;
+    }
+
+    /// How the edge pixels of the next outlines are drawn.
+    pub fn edges(&self) -> Edges {
+        self.edges
     }
 
     /// Shapes skipped so far in this band.
@@ -593,7 +612,10 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         // sharing an edge add up to the whole (`shapes_render.rs`: a
         // polygon cut along a diagonal, raw bits). Triangles and meshes
         // keep the linear integral (`Coverage::Signed`).
-        let coverage = Coverage::Rule(rule);
+        let coverage = match self.edges {
+            Edges::Smooth => Coverage::Rule(rule),
+            e => Coverage::Sharpened(rule, e),
+        };
         let op = op_of(blend, opacity);
         self.fill_outline(serial, 0, outline, coverage, &paint, op)
     }

@@ -49,7 +49,7 @@ use crate::color::IntoLinear;
 use crate::error::ShapeKind;
 use crate::path::{Dash, LineCap, LineJoin, MiterLimit, StrokeAlignment, StrokeStyle};
 use crate::raster::DrawError;
-use crate::style::{Blend, FillRule, Gradient, Opacity};
+use crate::style::{Blend, Edges, FillRule, Gradient, Opacity};
 
 /// How a primitive is drawn anti-aliased: fill and stroke colours, the
 /// stroke (width down to hairlines, joins, caps, dashes, alignment), the
@@ -115,6 +115,9 @@ pub struct AaStyle<'a, Col> {
     pub opacity: Opacity,
     /// Painter's order (default) or seed 000's addition.
     pub blend: Blend,
+    /// Exact coverage at the edges (default), or sharpened for a 1-bit
+    /// display ([`Edges`]).
+    pub edges: Edges,
 }
 
 impl<Col: Copy> Default for AaStyle<'_, Col> {
@@ -134,6 +137,7 @@ impl<'a, Col: Copy> AaStyle<'a, Col> {
             fill_rule: FillRule::NonZero,
             opacity: Opacity::OPAQUE,
             blend: Blend::Over,
+            edges: Edges::Smooth,
         }
     }
 
@@ -218,6 +222,7 @@ impl<'a, Col: Copy> AaStyle<'a, Col> {
             fill_rule: self.fill_rule,
             opacity: self.opacity,
             blend: self.blend,
+            edges: self.edges,
         }
     }
 
@@ -236,6 +241,23 @@ impl<'a, Col: Copy> AaStyle<'a, Col> {
     /// How the shape meets what is under it.
     pub const fn blend(mut self, blend: Blend) -> Self {
         self.blend = blend;
+        self
+    }
+
+    /// How its edge pixels are drawn: [`Edges::Crisp`] (whole pixels) or
+    /// [`Edges::Boost`] for text and lines that must stay legible on a
+    /// 1-bit display, where the rest of the frame keeps its dithered
+    /// half-tones.
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use softedge::prelude::*;
+    /// const VALUE_ARC: AaStyle<'static, BinaryColor> =
+    ///     AaStyle::with_stroke(BinaryColor::On, 5).cap(LineCap::Round).edges(Edges::Crisp);
+    /// assert_eq!(VALUE_ARC.edges, Edges::Crisp);
+    /// ```
+    pub const fn edges(mut self, edges: Edges) -> Self {
+        self.edges = edges;
         self
     }
 }
@@ -321,6 +343,8 @@ impl<P: AaShape, Col: Copy + IntoLinear<C>, const C: usize> AaDrawable<C>
         let s = &self.style;
         let shape = self.primitive.shape();
         let clean = canvas.skipped().first.is_none();
+        let edges = canvas.edges();
+        canvas.set_edges(s.edges);
         // A rejection is recorded by the canvas (and named below): the
         // results are not returned (see `AaDrawable`).
         if let Some(c) = s.fill_color {
@@ -333,6 +357,7 @@ impl<P: AaShape, Col: Copy + IntoLinear<C>, const C: usize> AaDrawable<C>
             }
             _ => {}
         }
+        canvas.set_edges(edges);
         name_rejection(canvas, clean, P::KIND);
         Ok(())
     }
