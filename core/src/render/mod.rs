@@ -20,6 +20,9 @@
 //! outside it cost their bounds test only.
 
 mod errors;
+#[cfg(feature = "display-interface")]
+#[cfg_attr(docsrs, doc(cfg(feature = "display-interface")))]
+pub mod pages;
 use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::geometry::{OriginDimensions, Point, Size};
 use embedded_graphics_core::primitives::Rectangle;
