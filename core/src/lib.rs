@@ -16,8 +16,7 @@
 //! let mut display = MockDisplay::<Rgb565>::new(); // any DrawTarget: mipidsi, ssd1306, ...
 //! let mut acc = [0; BandBuffer::<3>::acc_len(64, 8)];
 //! let mut cover = [0; BandBuffer::<3>::cover_len(64, 8)];
-//! let mut slots = [WalkSlot::EMPTY; 8];
-//! let mut renderer = Renderer::new(&mut acc, &mut cover, &mut slots, 64, 64, 8)?;
+//! let mut renderer = Renderer::new(&mut acc, &mut cover, &mut [], 64, 64, 8)?;
 //! let button = Rectangle::new(Point::new(8, 36), Size::new(48, 20));
 //! renderer.render(&mut display, &Rgb565Format::new(Curve::Srgb), Rgb565::BLACK, |canvas| {
 //!     Circle::new(Point::new(4, 4), 40).into_styled(AaStyle::with_fill(Rgb565::BLUE)).draw(canvas)?;
