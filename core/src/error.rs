@@ -11,16 +11,122 @@
 //! ```
 //! use softedge::{CoordError, DrawError, SubPoint};
 //! let e = DrawError::Coord(CoordError { point: SubPoint::new(32_776, 160) });
-//! assert_eq!(e.to_string(), "vertex (32776, 160) in 1/16 px is outside ±2048 px");
+//! assert_eq!(e.to_string(), "vertex (2048.5, 10) px is outside ±2048 px");
 //! let source = core::error::Error::source(&e).map(|s| s.to_string());
-//! assert_eq!(source.as_deref(), Some("vertex (32776, 160) in 1/16 px is outside ±2048 px"));
+//! assert_eq!(source.as_deref(), Some("vertex (2048.5, 10) px is outside ±2048 px"));
 //! ```
+//!
+//! Coordinates print in pixels (the engine's 1/16 and 1/1024 px units
+//! converted, to 4 decimals), and a shape drawn with a style of
+//! [`draw`](crate::draw) that is out of range is named by its kind
+//! ([`DrawError::OutOfRange`]).
 
 use core::error::Error;
 use core::fmt::{self, Display, Formatter};
 
-use crate::geom::{CoordError, FinePoint, COORD_LIMIT_PX};
+use crate::geom::{CoordError, FinePoint, COORD_LIMIT_PX, FINE_BITS};
 use crate::units::MAX_POLYGON_VERTICES;
+
+/// A coordinate of `2^-bits` px printed in pixels: the integer part, then
+/// up to 4 decimals (rounded half up in magnitude, trailing zeros left
+/// out): `(32776, 4)` prints `2048.5`, `(5_119_984, 10)` `4999.9844`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Px {
+    /// The value in `2^-bits` px.
+    pub v: i64,
+    /// Fraction bits of `v` (at most 32).
+    pub bits: u32,
+}
+
+impl Px {
+    /// A fine-grid (1/1024 px) coordinate.
+    pub(crate) fn fine(v: i32) -> Self {
+        Self {
+            v: i64::from(v),
+            bits: FINE_BITS,
+        }
+    }
+}
+
+impl Display for Px {
+    fn fmt(&self, f: &mut Formatter<'_>) -> fmt::Result {
+        const DECIMALS: u128 = 10_000;
+        let bits = self.bits.min(32);
+        let a = u128::from(self.v.unsigned_abs());
+        // round(|v| * 10^4 / 2^bits), in u128: no overflow for any i64.
+        let m = (a * DECIMALS + ((1u128 << bits) >> 1)) >> bits;
+        let (int, mut frac) = (m / DECIMALS, m % DECIMALS);
+        if self.v < 0 && m != 0 {
+            f.write_str("-")?;
+        }
+        write!(f, "{int}")?;
+        if frac != 0 {
+            let mut digits = 4;
+            while frac % 10 == 0 {
+                frac /= 10;
+                digits -= 1;
+            }
+            write!(f, ".{frac:0digits$}")?;
+        }
+        Ok(())
+    }
+}
+
+/// What kind of shape a styled shape of [`draw`](crate::draw) is: how an
+/// error names it (embedded-graphics' primitive or softedge's
+/// [`path`](crate::path) shape of that name).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
+pub enum ShapeKind {
+    /// A circle.
+    Circle,
+    /// An ellipse.
+    Ellipse,
+    /// An arc.
+    Arc,
+    /// A sector.
+    Sector,
+    /// A rectangle.
+    Rectangle,
+    /// A rounded rectangle.
+    RoundedRectangle,
+    /// A line.
+    Line,
+    /// A polyline.
+    Polyline,
+    /// A triangle.
+    Triangle,
+    /// A polygon.
+    Polygon,
+    /// SVG path data.
+    Path,
+}
+
+impl ShapeKind {
+    /// The kind's name in lower case, as errors print it.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::Circle => "circle",
+            Self::Ellipse => "ellipse",
+            Self::Arc => "arc",
+            Self::Sector => "sector",
+            Self::Rectangle => "rectangle",
+            Self::RoundedRectangle => "rounded rectangle",
+            Self::Line => "line",
+            Self::Polyline => "polyline",
+            Self::Triangle => "triangle",
+            Self::Polygon => "polygon",
+            Self::Path => "path",
+        }
+    }
+}
+
+impl Display for ShapeKind {
+    fn fmt(&self, f: &mut Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
 
 /// Why a primitive was not drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -49,6 +155,28 @@ pub enum DrawError {
     /// A [`TriangleList`](crate::canvas::TriangleList) has no room for
     /// another triangle.
     ListFull,
+    /// A styled shape of [`draw`](crate::draw) reaches a point outside
+    /// the accepted coordinate range (what [`FineCoord`](Self::FineCoord)
+    /// becomes once the shape is known).
+    OutOfRange {
+        /// The kind of shape.
+        shape: ShapeKind,
+        /// A corner of the box of what it draws (fill or stroke), 1/1024
+        /// px (printed in px).
+        point: FinePoint,
+    },
+}
+
+impl DrawError {
+    /// The error named by the shape that caused it: a point out of range
+    /// becomes [`OutOfRange`](Self::OutOfRange); the others stay as they
+    /// are.
+    pub const fn of_shape(self, shape: ShapeKind) -> Self {
+        match self {
+            Self::FineCoord(point) => Self::OutOfRange { shape, point },
+            e => e,
+        }
+    }
 }
 
 impl From<CoordError> for DrawError {
@@ -73,8 +201,15 @@ impl Display for DrawError {
             }
             Self::FineCoord(p) => write!(
                 f,
-                "point ({}, {}) in 1/1024 px is outside ±{COORD_LIMIT_PX} px",
-                p.x, p.y
+                "point ({}, {}) px is outside ±{COORD_LIMIT_PX} px",
+                Px::fine(p.x),
+                Px::fine(p.y)
+            ),
+            Self::OutOfRange { shape, point: p } => write!(
+                f,
+                "{shape} reaches ({}, {}) px, outside ±{COORD_LIMIT_PX} px",
+                Px::fine(p.x),
+                Px::fine(p.y)
             ),
             Self::ListFull => f.write_str("triangle list is full"),
             Self::BadIndex => f.write_str("a mesh triangle names a point the mesh does not have"),
@@ -114,7 +249,7 @@ mod tests {
         };
         assert_eq!(
             coord.to_string(),
-            "vertex (-40000, 3) in 1/16 px is outside ±2048 px"
+            "vertex (-2500, 0.1875) px is outside ±2048 px"
         );
         assert_eq!(
             HsrError::Draw(DrawError::TooManyVertices).to_string(),
@@ -141,6 +276,53 @@ mod tests {
             "frame size is zero or wider than 2048 px"
         );
         assert_eq!(ToneError::Contrast.to_string(), "contrast K is below 2");
+    }
+
+    /// Pixels, not engine units: the message of issue #34's circle at
+    /// x = 5000 (`point (5119984, 10224) in 1/1024 px` before), and the
+    /// same point named by its shape. The decimals are checked against
+    /// an `f64` division here.
+    #[test]
+    fn coordinates_print_in_pixels_and_name_the_shape() {
+        let p = FinePoint::new(5_119_984, 10_224);
+        assert_eq!(
+            DrawError::FineCoord(p).to_string(),
+            "point (4999.9844, 9.9844) px is outside ±2048 px"
+        );
+        assert_eq!(
+            DrawError::FineCoord(p)
+                .of_shape(ShapeKind::Circle)
+                .to_string(),
+            "circle reaches (4999.9844, 9.9844) px, outside ±2048 px"
+        );
+        assert_eq!(
+            DrawError::BadIndex.of_shape(ShapeKind::Line),
+            DrawError::BadIndex
+        );
+        for v in [
+            0i64,
+            1,
+            -1,
+            512,
+            -512,
+            1023,
+            5_119_984,
+            -2_097_153,
+            i64::from(i32::MAX),
+            i64::MIN,
+            i64::MAX,
+        ] {
+            for bits in [0, 4, 10] {
+                let s = Px { v, bits }.to_string();
+                let back: f64 = s.parse().unwrap();
+                let exact = v as f64 / f64::from(1u32 << bits);
+                assert!(
+                    (back - exact).abs() <= 0.5e-4 * (1.0 + exact.abs() * 1e-12),
+                    "{v} / 2^{bits}: {s}"
+                );
+                assert!(!s.ends_with('0') || !s.contains('.'), "{s}");
+            }
+        }
     }
 
     #[test]

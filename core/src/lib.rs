@@ -16,13 +16,12 @@
 //! let mut display = MockDisplay::<Rgb565>::new(); // any DrawTarget: mipidsi, ssd1306, ...
 //! let mut acc = [0; BandBuffer::<3>::acc_len(64, 8)];
 //! let mut cover = [0; BandBuffer::<3>::cover_len(64, 8)];
-//! let mut slots = [WalkSlot::EMPTY; 8];
-//! let mut renderer = Renderer::new(&mut acc, &mut cover, &mut slots, 64, 64, 8)?;
+//! let mut renderer = Renderer::new(&mut acc, &mut cover, &mut [], 64, 64, 8)?;
 //! let button = Rectangle::new(Point::new(8, 36), Size::new(48, 20));
 //! renderer.render(&mut display, &Rgb565Format::new(Curve::Srgb), Rgb565::BLACK, |canvas| {
 //!     Circle::new(Point::new(4, 4), 40).into_styled(AaStyle::with_fill(Rgb565::BLUE)).draw(canvas)?;
 //!     RoundedRectangle::with_equal_corners(button, Size::new(6, 6))
-//!         .into_styled(AaStyle::with_fill(Rgb565::RED).opacity(Opacity::from_ratio(1, 2)))
+//!         .into_styled(AaStyle::with_fill(Rgb565::RED).opacity(Opacity::from_percent(50)))
 //!         .draw(canvas)?;
 //!     Line::new(Point::new(2, 61), Point::new(61, 2))
 //!         .into_styled(AaStyle::with_stroke(Rgb565::WHITE, 3).cap(LineCap::Round))
@@ -167,6 +166,7 @@ mod units;
 pub use fixed;
 
 pub use band::{Band, BandBuffer, BandError, Bands};
+pub use error::ShapeKind;
 pub use geom::{CoordError, SubPoint, COORD_LIMIT_PX, SUB_BITS, SUB_ONE};
 pub use raster::{
     DrawError, Line, PixelModel, Polygon, PolygonColors, RenderStyle, Triangle,

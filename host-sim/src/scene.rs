@@ -363,8 +363,9 @@ pub fn draw_error_text(error: DrawError) -> String {
     use softedge::{COORD_LIMIT_PX, MAX_POLYGON_VERTICES};
     match error {
         DrawError::Coord(c) => format!(
-            "a vertex is outside ±{COORD_LIMIT_PX} px: ({}, {}) in 1/16 px",
-            c.point.x, c.point.y
+            "a vertex is outside ±{COORD_LIMIT_PX} px: ({}, {}) px",
+            f64::from(c.point.x) / 16.0,
+            f64::from(c.point.y) / 16.0
         ),
         DrawError::TooManyVertices => format!("more than {MAX_POLYGON_VERTICES} vertices"),
         DrawError::ColorCount => {
@@ -374,8 +375,9 @@ pub fn draw_error_text(error: DrawError) -> String {
             "the polygon intersects itself (two of its edges touch or cross)".into()
         }
         DrawError::FineCoord(p) => format!(
-            "a point is outside ±{COORD_LIMIT_PX} px: ({}, {}) in 1/1024 px",
-            p.x, p.y
+            "a point is outside ±{COORD_LIMIT_PX} px: ({}, {}) px",
+            f64::from(p.x) / 1024.0,
+            f64::from(p.y) / 1024.0
         ),
         DrawError::BadIndex => "a mesh triangle names a point the mesh does not have".into(),
         other => other.to_string(),

@@ -105,6 +105,10 @@ fn bad_number_is_named() {
     expect(text, 3, "display.height", "outside 1..=2048");
     let text = format!("{HEAD}[render]\nband_rows = 1.5\n");
     expect(&text, 6, "render.band_rows", "invalid type");
+    // Issue #34: a band of no rows is an error naming the field, not a
+    // band of one row.
+    let text = format!("{HEAD}[render]\nband_rows = 0\n");
+    expect(&text, 6, "render.band_rows", "0 is outside 1..=2048");
     let text = format!("{HEAD}[render]\ngamma = 0.5\n");
     expect(&text, 6, "render.gamma", "1.0..=5.0");
     let text = format!("{HEAD}[[line]]\nfrom = [0, \"a\"]\nto = [1, 1]\ncolor = [1]\n");

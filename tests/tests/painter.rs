@@ -144,7 +144,7 @@ proptest! {
         let p = |x, y| FinePoint::from_px(x, y);
         let square = [p(2, 2), p(10, 2), p(10, 9), p(2, 9)];
         let f = render_canvas::<3>(12, 12, 5, bg, 0, |c| {
-            c.fill(&Contour(&square), col, FillRule::NonZero, Blend::Over, Opacity::from_ratio(1, 2)).unwrap();
+            c.fill(&Contour(&square), col, FillRule::NonZero, Blend::Over, Opacity::from_percent(50)).unwrap();
         });
         for j in 2..9 {
             for i in 2..10 {
@@ -338,7 +338,7 @@ fn embedded_graphics_drawings_compose_in_painters_order() {
             .draw(c)
             .unwrap();
         Rectangle::new(Point::new(0, 6), Size::new(40, 14))
-            .into_styled(AaStyle::with_fill(Rgb888::RED).opacity(Opacity::from_ratio(1, 2)))
+            .into_styled(AaStyle::with_fill(Rgb888::RED).opacity(Opacity::from_percent(50)))
             .draw(c)
             .unwrap();
     });

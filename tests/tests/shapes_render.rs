@@ -591,7 +591,7 @@ fn a_polygon_cut_along_a_diagonal_equals_the_whole() {
             "polygon {k}, add"
         );
         // Over: the halves as two contours of one path, at any opacity.
-        let op = Opacity::from_ratio(k as u32 % 5 + 1, 5);
+        let op = Opacity::from_ratio(k as u32 % 5 + 1, 5).unwrap();
         let whole = render_canvas::<1>(32, 32, 6, bg, 0, |c| {
             c.fill_shape(
                 &Polygon::new(&poly),
@@ -641,7 +641,7 @@ fn first_diff<T: PartialEq + Copy>(a: &[T], b: &[T]) -> Option<(usize, T, T)> {
 /// Every kind of shape and stroke in one frame.
 fn scene(c: &mut Canvas<'_, '_, 3>) {
     let p = FinePoint::new;
-    let op = Opacity::from_ratio(3, 4);
+    let op = Opacity::from_ratio(3, 4).unwrap();
     let over = Blend::Over;
     let nz = FillRule::NonZero;
     c.fill_shape(
@@ -693,7 +693,7 @@ fn scene(c: &mut Canvas<'_, '_, 3>) {
         [1000, 0, 2000],
         FillRule::EvenOdd,
         over,
-        Opacity::from_ratio(1, 2),
+        Opacity::from_ratio(1, 2).unwrap(),
     )
     .unwrap();
     let inside = StrokeStyle::new(1_500).with_alignment(StrokeAlignment::Inside);
@@ -753,7 +753,7 @@ fn curves_give_the_same_bits_in_every_band_height() {
                 let (a, s) = (Degrees::new(a as i32), Degrees::new(s as i32));
                 let w = (r2 * 300.0) as u32 + 200;
                 let col = [((x + 20.0) * 30.0) as u16];
-                let op = Opacity::from_ratio(2, 3);
+                let op = Opacity::from_ratio(2, 3).unwrap();
                 let _ = match kind {
                     0 => c.fill_shape(
                         &Circle::new(centre, rf),

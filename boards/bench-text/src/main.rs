@@ -82,10 +82,13 @@ impl DrawTarget for Sink {
     }
     fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(
         &mut self,
-        _: &Rectangle,
+        area: &Rectangle,
         colors: I,
     ) -> Result<(), Self::Error> {
-        for c in colors {
+        // As e-g's contract says: the area's pixels and no more (its
+        // `fill_solid` passes an endless `repeat`).
+        let n = area.size.width as usize * area.size.height as usize;
+        for c in colors.into_iter().take(n) {
             self.0 = self.0.wrapping_add(u32::from(
                 embedded_graphics_core::pixelcolor::IntoStorage::into_storage(c),
             ));

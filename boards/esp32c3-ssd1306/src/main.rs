@@ -6,9 +6,10 @@
 //! dithers every band to 1 bit in linear light — Floyd–Steinberg
 //! ([`DiffusionProfile`], its error row carried from band to band) and the
 //! 8x8 Bayer matrix ([`Bayer8`]) alternate every 100 frames — and sends
-//! each band with one `fill_contiguous` to [`PageWriter`](pages::PageWriter),
-//! which packs it into the page's 128 bytes for the driver's
-//! `set_draw_area` + `draw`. No band loop here, no frame buffer anywhere.
+//! each band with one `fill_contiguous` to the library's
+//! [`PageWriter`](softedge::render::pages::PageWriter), which packs the
+//! bands into its one 128-byte page buffer and sends each page over I2C
+//! when its last row arrives. No band loop here, no frame buffer anywhere.
 //!
 //! Logs one line per frame over the USB serial/JTAG port (or UART0):
 //! frame number, microseconds for the frame (drawing, dithering and the
@@ -30,7 +31,6 @@
 #![no_std]
 #![no_main]
 
-mod pages;
 mod ui;
 
 use esp_backtrace as _;
@@ -45,8 +45,8 @@ use ssd1306::{I2CDisplayInterface, Ssd1306};
 use static_cell::ConstStaticCell;
 
 use softedge::prelude::*;
+use softedge::render::pages::PageWriter;
 
-use pages::PageWriter;
 use ui::Panel;
 
 // The application descriptor Espressif's second-stage bootloader checks.
@@ -55,8 +55,9 @@ esp_bootloader_esp_idf::esp_app_desc!();
 /// Panel size.
 const W: u16 = 128;
 const H: u16 = 64;
-/// Rows per band: one SSD1306 page.
-const BAND_ROWS: u16 = 8;
+/// Rows per band: 2. The page writer gathers 4 bands into a page; the
+/// band buffers are a quarter of 8-row bands' (2 080 bytes, not 8 256).
+const BAND_ROWS: u16 = 2;
 const ACC_LEN: usize = BandBuffer::<1>::acc_len(W, BAND_ROWS);
 const COVER_LEN: usize = BandBuffer::<1>::cover_len(W, BAND_ROWS);
 /// Walk-cache slots: none. This panel's edges are short (flattened
@@ -65,7 +66,7 @@ const COVER_LEN: usize = BandBuffer::<1>::cover_len(W, BAND_ROWS);
 /// `WalkSlot::<1>::SIZE` bytes.
 const SLOTS: usize = 0;
 
-/// The band buffers (`4 * (ACC_LEN + COVER_LEN)` = 8 256 bytes), and
+/// The band buffers (`4 * (ACC_LEN + COVER_LEN)` = 2 080 bytes), and
 /// Floyd–Steinberg's rows (an `i16` error and a result per column, 384
 /// bytes): all zeros, in .bss, each handed out once.
 static ACC: ConstStaticCell<[i32; ACC_LEN]> = ConstStaticCell::new([0; ACC_LEN]);
@@ -92,7 +93,9 @@ fn main() -> ! {
     if let Err(e) = display.init() {
         panic!("SSD1306 init (wiring? address?): {:?}", e);
     }
-    let mut oled = PageWriter::new(display);
+    // The driver has powered and set up the panel; its interface goes to
+    // the page writer (SSD1306 commands: column and page ranges).
+    let mut oled = PageWriter::ssd1306_128x64(display.release());
 
     let (Some(acc), Some(cover), Some(err_row), Some(bits)) = (
         ACC.try_take(),

@@ -117,7 +117,7 @@ const HUB: Rgb565 = srgb(0xd0, 0xd4, 0xdc);
 const PIVOT: Rgb565 = srgb(0x20, 0x20, 0x20);
 const PANEL: Rgb565 = srgb(0x00, 0x00, 0x00);
 /// The readout panel lets 3/8 of what is under it through.
-const PANEL_OPACITY: Opacity = Opacity::from_ratio(5, 8);
+const PANEL_OPACITY: Opacity = Opacity::from_4096ths(2560); // 5/8
 const BUTTON_FILL: Rgb565 = srgb(0x10, 0x60, 0x58);
 const BUTTON_EDGE: Rgb565 = srgb(0x60, 0xd0, 0xc0);
 const TEXT: Rgb565 = Rgb565::WHITE;

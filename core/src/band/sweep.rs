@@ -73,6 +73,9 @@ pub(crate) enum Coverage {
     Signed(i32),
     /// Any outline, by a fill rule.
     Rule(FillRule),
+    /// By a fill rule, then sharpened for a 1-bit display
+    /// ([`Edges`](crate::style::Edges)).
+    Sharpened(FillRule, crate::style::Edges),
 }
 
 /// The share of a pixel covered, from its winding integral `c` (coverage
@@ -97,6 +100,7 @@ fn share(c: i32, coverage: Coverage) -> i32 {
                 m
             }
         }
+        Coverage::Sharpened(rule, edges) => edges.sharpen(share(c, Coverage::Rule(rule))),
     }
 }
 

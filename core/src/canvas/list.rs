@@ -348,7 +348,7 @@ mod tests {
                     Blend::Over
                 };
                 let op = if next(3) == 0 {
-                    Opacity::from_ratio(1 + next(7) as u32, 8)
+                    Opacity::from_ratio(1 + next(7) as u32, 8).unwrap()
                 } else {
                     Opacity::OPAQUE
                 };
@@ -394,7 +394,7 @@ mod tests {
                         c.fill_triangle(v, col, b, o).unwrap();
                     }
                 }
-                let half = Opacity::from_ratio(1, 2);
+                let half = Opacity::from_percent(50);
                 c.fill_shape(&disc, [0, 4095, 0], FillRule::NonZero, Blend::Add, half)
                     .unwrap();
             };

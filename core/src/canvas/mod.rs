@@ -19,7 +19,10 @@
 //!
 //! Rejected shapes (a vertex outside the coordinate range, too many
 //! vertices for a Gouraud polygon) are not drawn, counted, and the first
-//! reason kept ([`Canvas::skipped`]): the rest of the frame is drawn.
+//! reason kept ([`Canvas::skipped`]): the rest of the frame is drawn. The
+//! canvas's methods also return the rejection; the styled shapes of
+//! [`draw`](crate::draw) return `Ok` (the record names the shape), so a
+//! drawing closure can `?` them without stopping the band.
 
 mod cache;
 mod gradient;
@@ -43,7 +46,7 @@ use crate::path::SegmentSink;
 use crate::pixel_model::{walk_bed_of_nails, walk_circular, walk_hex19, walk_hex7, CircularFilter};
 use crate::raster::{DrawError, PixelModel, RenderStyle};
 use crate::shade::Plane;
-use crate::style::{Blend, FillRule, Opacity};
+use crate::style::{Blend, Edges, FillRule, Opacity};
 
 /// A box in fine units, `x0..x1` by `y0..y1` (half-open).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -188,6 +191,8 @@ pub struct Canvas<'c, 'b, const C: usize, Col = [u16; C]> {
     shapes: Option<ShapeCache<'c>>,
     serial: u32,
     style: RenderStyle,
+    /// How the next outlines' edge pixels are drawn (1-bit displays).
+    edges: Edges,
     skipped: Skipped,
     /// The whole frame, for embedded-graphics' clipping.
     frame: (u16, u16),
@@ -289,6 +294,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             shapes: None,
             serial: 0,
             style: RenderStyle::default(),
+            edges: Edges::Smooth,
             skipped: Skipped::default(),
             frame,
             reach: Reach::of(band),
@@ -335,6 +341,22 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         self.style = style;
     }
 
+    /// How the edge pixels of every following outline (shapes, strokes,
+    /// paths, text; not triangles and meshes) are drawn: exact coverage
+    /// ([`Edges::Smooth`], the default) or sharpened for a 1-bit display
+    /// (see [`Edges`]). A styled shape's own
+    /// [`AaStyle::edges`](crate::draw::AaStyle::edges) sets it for that
+    /// shape; set it around text: `canvas.set_edges(Edges::Crisp);
+    /// text.draw(canvas)?; canvas.set_edges(Edges::Smooth);`.
+    pub fn set_edges(&mut self, edges: Edges) {
+        self.edges = edges;
+    }
+
+    /// How the edge pixels of the next outlines are drawn.
+    pub fn edges(&self) -> Edges {
+        self.edges
+    }
+
     /// Shapes skipped so far in this band.
     pub fn skipped(&self) -> Skipped {
         self.skipped
@@ -348,6 +370,13 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
     /// The band buffer under the canvas.
     pub fn buffer(&mut self) -> &mut BandBuffer<'b, C> {
         self.buf
+    }
+
+    /// The record of skipped shapes, for the styled shapes of
+    /// [`draw`](crate::draw) to name theirs ([`DrawError::of_shape`]).
+    #[cfg(feature = "embedded-graphics")]
+    pub(crate) fn skipped_mut(&mut self) -> &mut Skipped {
+        &mut self.skipped
     }
 
     /// Counts a shape that was rejected.
@@ -379,7 +408,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
     /// let p = |x, y| FinePoint::from_px(x, y);
     /// let square = [p(0, 0), p(2, 0), p(2, 2), p(0, 2)];
     /// canvas
-    ///     .fill(&Contour(&square), [3000], FillRule::NonZero, Blend::Over, Opacity::from_ratio(1, 2))
+    ///     .fill(&Contour(&square), [3000], FillRule::NonZero, Blend::Over, Opacity::from_percent(50))
     ///     .unwrap();
     /// // Half of 3000 over 1000: the linear midpoint.
     /// assert_eq!(canvas.buffer().lin12(1, 1), Some([2000]));
@@ -583,7 +612,10 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         // sharing an edge add up to the whole (`shapes_render.rs`: a
         // polygon cut along a diagonal, raw bits). Triangles and meshes
         // keep the linear integral (`Coverage::Signed`).
-        let coverage = Coverage::Rule(rule);
+        let coverage = match self.edges {
+            Edges::Smooth => Coverage::Rule(rule),
+            e => Coverage::Sharpened(rule, e),
+        };
         let op = op_of(blend, opacity);
         self.fill_outline(serial, 0, outline, coverage, &paint, op)
     }

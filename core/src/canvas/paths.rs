@@ -376,7 +376,7 @@ mod tests {
             } else {
                 Blend::Over
             };
-            let op = Opacity::from_ratio(2 + (case % 3) as u32, 4);
+            let op = Opacity::from_ratio(2 + (case % 3) as u32, 4).unwrap();
             let mut store = [Segment::default(); 2048];
             let mut stroke = SegmentBuffer::new(&mut store);
             line.stroke(&style, &mut stroke).unwrap();

@@ -415,7 +415,7 @@ mod tests {
             } else {
                 Blend::Over
             },
-            op: Opacity::from_ratio(1 + next(4), 4),
+            op: Opacity::from_ratio(1 + next(4), 4).unwrap(),
         }
     }
 
@@ -633,7 +633,7 @@ mod tests {
     fn outlines_drawn_this_frame_move_together_to_make_room() {
         let disc = |x: i32, r: u32| Item {
             color: 1000 + 900 * x as u16 / 8,
-            op: Opacity::from_ratio(3, 4),
+            op: Opacity::from_percent(75),
             ..disc(x, 24, r)
         };
         let (a, b, c) = (disc(14, 10), disc(32, 12), disc(50, 11));

@@ -32,23 +32,24 @@
 //!     .into_styled(AaStyle::with_fill(Rgb888::new(0, 128, 255)))
 //!     .draw(&mut canvas)?;
 //! Line::new(Point::new(0, 10), Point::new(19, 10))
-//!     .into_styled(AaStyle::with_stroke(Rgb888::WHITE, 3).opacity(Opacity::from_ratio(1, 2)))
+//!     .into_styled(AaStyle::with_stroke(Rgb888::WHITE, 3).opacity(Opacity::from_percent(50)))
 //!     .draw(&mut canvas)?;
 //! # Ok::<(), softedge::DrawError>(())
 //! ```
 
 mod shapes;
 
-pub use shapes::AaShape;
+pub use shapes::{eg_stroke, AaShape};
 
 use embedded_graphics::primitives::{PrimitiveStyle, Styled};
 use embedded_graphics_core::pixelcolor::PixelColor;
 
 use crate::canvas::Canvas;
 use crate::color::IntoLinear;
+use crate::error::ShapeKind;
 use crate::path::{Dash, LineCap, LineJoin, MiterLimit, StrokeAlignment, StrokeStyle};
 use crate::raster::DrawError;
-use crate::style::{Blend, FillRule, Gradient, Opacity};
+use crate::style::{Blend, Edges, FillRule, Gradient, Opacity};
 
 /// How a primitive is drawn anti-aliased: fill and stroke colours, the
 /// stroke (width down to hairlines, joins, caps, dashes, alignment), the
@@ -59,6 +60,32 @@ use crate::style::{Blend, FillRule, Gradient, Opacity};
 /// then the chained setters), or converted from one
 /// (`AaStyle::from(style)`: the same colours, width and alignment).
 ///
+/// On embedded-graphics' primitives a stroke of whole pixels lights the
+/// pixels embedded-graphics lights where its edges are exact
+/// (axis-aligned, integer geometry; see [`eg_stroke`]): a 1-px stroke of
+/// a `Rectangle` is one whole pixel wide, not two half-bright ones.
+///
+/// **Half-pixel conventions.** `Circle::with_center(p, d)` with an even
+/// `d` sits half a pixel right of and below pixel `p`'s centre
+/// (embedded-graphics puts its corner at `p - (d - 1) / 2`), which
+/// aliased drawing hid. To centre a circle on a pixel, use an odd `d`, or
+/// softedge's circle: `path::Circle::new(FinePoint::centre_of(p.x, p.y),
+/// d * 512)` (radius in 1/1024 px):
+///
+/// ```
+/// use embedded_graphics::prelude::*;
+/// use embedded_graphics::primitives::Circle;
+/// use softedge::geom::FinePoint;
+/// use softedge::path;
+/// let p = Point::new(20, 20);
+/// let eg: path::Circle = Circle::with_center(p, 10).into();
+/// assert_eq!(eg.centre, FinePoint::from_px(21, 21)); // half a pixel off
+/// let centred = path::Circle::new(FinePoint::centre_of(p.x, p.y), 10 * 512);
+/// assert_eq!(centred.centre, FinePoint::new(20 * 1024 + 512, 20 * 1024 + 512));
+/// let odd: path::Circle = Circle::with_center(p, 11).into();
+/// assert_eq!(odd.centre, centred.centre);
+/// ```
+///
 /// ```
 /// use embedded_graphics::pixelcolor::Rgb565;
 /// use embedded_graphics::prelude::*;
@@ -68,7 +95,7 @@ use crate::style::{Blend, FillRule, Gradient, Opacity};
 /// const NEEDLE: AaStyle<'static, Rgb565> = AaStyle::with_stroke(Rgb565::RED, 3)
 ///     .cap(LineCap::Round)
 ///     .join(LineJoin::Round)
-///     .opacity(Opacity::from_ratio(3, 4));
+///     .opacity(Opacity::from_percent(75));
 /// assert_eq!(NEEDLE.stroke.width, 3 * 1024);
 /// assert!(NEEDLE.fill_color.is_none());
 /// ```
@@ -88,6 +115,9 @@ pub struct AaStyle<'a, Col> {
     pub opacity: Opacity,
     /// Painter's order (default) or seed 000's addition.
     pub blend: Blend,
+    /// Exact coverage at the edges (default), or sharpened for a 1-bit
+    /// display ([`Edges`]).
+    pub edges: Edges,
 }
 
 impl<Col: Copy> Default for AaStyle<'_, Col> {
@@ -107,6 +137,7 @@ impl<'a, Col: Copy> AaStyle<'a, Col> {
             fill_rule: FillRule::NonZero,
             opacity: Opacity::OPAQUE,
             blend: Blend::Over,
+            edges: Edges::Smooth,
         }
     }
 
@@ -146,10 +177,21 @@ impl<'a, Col: Copy> AaStyle<'a, Col> {
         self
     }
 
-    /// Which side of a closed outline the stroke lies on (open ones are
-    /// always centred).
-    pub const fn stroke_alignment(mut self, alignment: StrokeAlignment) -> Self {
-        self.stroke.alignment = alignment;
+    /// Which side of a closed outline the stroke lies on:
+    /// embedded-graphics' `StrokeAlignment` (`Inside`, `Center`,
+    /// `Outside`) or softedge's [`StrokeAlignment`]. On embedded-graphics'
+    /// primitives a stroke of whole pixels lies on the pixels
+    /// embedded-graphics lights (see [`eg_stroke`]).
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use embedded_graphics::primitives::StrokeAlignment;
+    /// use softedge::prelude::*;
+    /// let style = AaStyle::with_stroke(BinaryColor::On, 1).stroke_alignment(StrokeAlignment::Inside);
+    /// assert_eq!(style.stroke.alignment, softedge::path::StrokeAlignment::Inside);
+    /// ```
+    pub fn stroke_alignment(mut self, alignment: impl Into<StrokeAlignment>) -> Self {
+        self.stroke.alignment = alignment.into();
         self
     }
 
@@ -180,6 +222,7 @@ impl<'a, Col: Copy> AaStyle<'a, Col> {
             fill_rule: self.fill_rule,
             opacity: self.opacity,
             blend: self.blend,
+            edges: self.edges,
         }
     }
 
@@ -200,6 +243,23 @@ impl<'a, Col: Copy> AaStyle<'a, Col> {
         self.blend = blend;
         self
     }
+
+    /// How its edge pixels are drawn: [`Edges::Crisp`] (whole pixels) or
+    /// [`Edges::Boost`] for text and lines that must stay legible on a
+    /// 1-bit display, where the rest of the frame keeps its dithered
+    /// half-tones.
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use softedge::prelude::*;
+    /// const VALUE_ARC: AaStyle<'static, BinaryColor> =
+    ///     AaStyle::with_stroke(BinaryColor::On, 5).cap(LineCap::Round).edges(Edges::Crisp);
+    /// assert_eq!(VALUE_ARC.edges, Edges::Crisp);
+    /// ```
+    pub const fn edges(mut self, edges: Edges) -> Self {
+        self.edges = edges;
+        self
+    }
 }
 
 impl<Col: PixelColor> From<PrimitiveStyle<Col>> for AaStyle<'static, Col> {
@@ -214,7 +274,7 @@ impl<Col: PixelColor> From<PrimitiveStyle<Col>> for AaStyle<'static, Col> {
         }
         style
             .stroke_width(s.stroke_width)
-            .stroke_alignment(s.stroke_alignment.into())
+            .stroke_alignment(s.stroke_alignment)
     }
 }
 
@@ -223,14 +283,57 @@ impl<Col: PixelColor> From<PrimitiveStyle<Col>> for AaStyle<'static, Col> {
 /// `DrawTarget`): a primitive with an [`AaStyle`] (colours the canvas
 /// converts) or an [`AaGradient`] (a gradient of the canvas's channels).
 ///
-/// A rejected shape (coordinates outside the range, a stroke too wide) is
-/// not drawn, counted in the canvas's [`skipped`](Canvas::skipped) and
-/// returned; the renderer reports it after the frame. Fill and stroke are
-/// both tried; the first error is returned.
+/// **`draw` returns `Ok` for every shape**, so `?` in a drawing closure
+/// never stops the frame. A shape the canvas rejects (a point outside
+/// the ±2048 px range, a dash pattern of too many intervals) is not
+/// drawn: it is counted in the canvas's [`skipped`](Canvas::skipped),
+/// the first one named ([`DrawError::OutOfRange`]: its kind and the point,
+/// in px) with its place in the drawing order, and the renderer returns
+/// that record with the frame ([`FrameReport`](crate::render::FrameReport)),
+/// every other shape drawn. Fill and stroke are each a shape of their
+/// own. The `Result` is kept for embedded-graphics' idiom (`Drawable`
+/// returns one) and for errors a future style may find before drawing.
+///
+/// ```
+/// use embedded_graphics::pixelcolor::Rgb565;
+/// use embedded_graphics::prelude::*;
+/// use embedded_graphics::primitives::Circle;
+/// use softedge::prelude::*;
+/// # use softedge::{Band, BandBuffer};
+/// # let (mut acc, mut cover) = ([0i32; BandBuffer::<3>::acc_len(20, 20)], [0i32; BandBuffer::<3>::cover_len(20, 20)]);
+/// # let mut buf = BandBuffer::<3>::new(&mut acc, &mut cover, Band::new(20, 0, 20)).unwrap();
+/// # buf.clear([0; 3]);
+/// # let mut canvas: Canvas<'_, '_, 3, Rgb565> = Canvas::typed(&mut buf, None);
+/// let style = AaStyle::with_fill(Rgb565::BLUE);
+/// Circle::new(Point::new(5000, 0), 8).into_styled(style).draw(&mut canvas)?; // rejected: Ok
+/// Circle::new(Point::new(2, 2), 8).into_styled(style).draw(&mut canvas)?; // drawn
+/// let (at, why) = canvas.skipped().first.unwrap();
+/// assert_eq!(at, 0);
+/// // "circle reaches (4999.9844, -0.0156) px, outside ±2048 px": a corner
+/// // of the box of what it draws (the area-true polygon reaches a hair
+/// // beyond the circle).
+/// assert!(why.to_string().starts_with("circle reaches (4999.98"));
+/// # Ok::<(), DrawError>(())
+/// ```
 pub trait AaDrawable<const C: usize> {
     /// Draws into `canvas`, whose band may hold only part of the shape
-    /// (the rest is drawn in the other bands).
+    /// (the rest is drawn in the other bands). `Ok` whether or not the
+    /// canvas took the shape (see the trait's docs).
     fn draw<D>(&self, canvas: &mut Canvas<'_, '_, C, D>) -> Result<(), DrawError>;
+}
+
+/// Names the first rejection of the frame's band by `kind` when it was
+/// recorded by the shape just drawn (`clean`: none was recorded before).
+fn name_rejection<const C: usize, D>(
+    canvas: &mut Canvas<'_, '_, C, D>,
+    clean: bool,
+    kind: ShapeKind,
+) {
+    if clean {
+        if let Some((_, e)) = &mut canvas.skipped_mut().first {
+            *e = e.of_shape(kind);
+        }
+    }
 }
 
 impl<P: AaShape, Col: Copy + IntoLinear<C>, const C: usize> AaDrawable<C>
@@ -239,17 +342,24 @@ impl<P: AaShape, Col: Copy + IntoLinear<C>, const C: usize> AaDrawable<C>
     fn draw<D>(&self, canvas: &mut Canvas<'_, '_, C, D>) -> Result<(), DrawError> {
         let s = &self.style;
         let shape = self.primitive.shape();
-        let fill = match s.fill_color {
-            Some(c) => canvas.fill_shape(&shape, c.into_linear(), s.fill_rule, s.blend, s.opacity),
-            None => Ok(()),
-        };
-        let stroke = match s.stroke_color {
+        let clean = canvas.skipped().first.is_none();
+        let edges = canvas.edges();
+        canvas.set_edges(s.edges);
+        // A rejection is recorded by the canvas (and named below): the
+        // results are not returned (see `AaDrawable`).
+        if let Some(c) = s.fill_color {
+            let _ = canvas.fill_shape(&shape, c.into_linear(), s.fill_rule, s.blend, s.opacity);
+        }
+        match s.stroke_color {
             Some(c) if s.stroke.width > 0 => {
-                canvas.stroke_shape(&shape, &s.stroke, c.into_linear(), s.blend, s.opacity)
+                let (on, stroke) = self.primitive.stroked(&s.stroke);
+                let _ = canvas.stroke_shape(&on, &stroke, c.into_linear(), s.blend, s.opacity);
             }
-            _ => Ok(()),
-        };
-        fill.and(stroke)
+            _ => {}
+        }
+        canvas.set_edges(edges);
+        name_rejection(canvas, clean, P::KIND);
+        Ok(())
     }
 }
 
@@ -345,9 +455,16 @@ impl<P: AaShape, const C: usize> AaDrawable<C> for Styled<P, AaGradient<'_, C>> 
     fn draw<D>(&self, canvas: &mut Canvas<'_, '_, C, D>) -> Result<(), DrawError> {
         let s = &self.style;
         let shape = self.primitive.shape();
-        match &s.stroke {
+        let clean = canvas.skipped().first.is_none();
+        // Recorded by the canvas when rejected (see `AaDrawable`).
+        let _ = match &s.stroke {
             None => canvas.fill_shape_gradient(&shape, s.gradient, s.fill_rule, s.blend, s.opacity),
-            Some(st) => canvas.stroke_shape_gradient(&shape, st, s.gradient, s.blend, s.opacity),
-        }
+            Some(st) => {
+                let (on, stroke) = self.primitive.stroked(st);
+                canvas.stroke_shape_gradient(&on, &stroke, s.gradient, s.blend, s.opacity)
+            }
+        };
+        name_rejection(canvas, clean, P::KIND);
+        Ok(())
     }
 }

@@ -9,8 +9,15 @@ impl Display for CoordError {
     fn fmt(&self, f: &mut Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "vertex ({}, {}) in 1/16 px is outside ±{COORD_LIMIT_PX} px",
-            self.point.x, self.point.y
+            "vertex ({}, {}) px is outside ±{COORD_LIMIT_PX} px",
+            crate::error::Px {
+                v: i64::from(self.point.x),
+                bits: super::SUB_BITS
+            },
+            crate::error::Px {
+                v: i64::from(self.point.y),
+                bits: super::SUB_BITS
+            }
         )
     }
 }

@@ -23,6 +23,9 @@
 //! outside it cost their bounds test only.
 
 mod errors;
+#[cfg(feature = "display-interface")]
+#[cfg_attr(docsrs, doc(cfg(feature = "display-interface")))]
+pub mod pages;
 use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::geometry::{OriginDimensions, Point, Size};
 use embedded_graphics_core::primitives::Rectangle;
@@ -211,9 +214,14 @@ impl<'a, const C: usize> Renderer<'a, C> {
     /// embedded-graphics colour as sRGB, or linear `[u16; C]`).
     ///
     /// A shape the canvas rejects is skipped and reported
-    /// ([`FrameReport::skipped`]); the rest of the frame is drawn. An error
-    /// the closure returns is reported after the frame, which is drawn and
-    /// sent whole (each band as far as the closure drew it).
+    /// ([`FrameReport::skipped`]: how many, the first one's place in the
+    /// drawing order and why); the rest of the frame is drawn. The styled
+    /// shapes' [`draw`](crate::draw::AaDrawable::draw) returns `Ok` for a
+    /// rejected shape too, so `?` after it in the closure is safe. An
+    /// error the closure returns itself (or passes on with `?` from text's
+    /// `draw` or the canvas's own `fill`-like methods, which return the
+    /// rejection as well as record it) is reported after the frame, which
+    /// is drawn and sent whole (each band as far as the closure drew it).
     pub fn render<D, P, B, E, F>(
         &mut self,
         target: &mut D,
@@ -661,7 +669,7 @@ mod tests {
             for _ in 0..shapes {
                 let kind = rng.below(6);
                 let opacity = if rng.below(3) == 0 {
-                    Opacity::from_ratio(rng.below(255) as u32 + 1, 256)
+                    Opacity::from_ratio(rng.below(255) as u32 + 1, 256).unwrap_or(Opacity::OPAQUE)
                 } else {
                     Opacity::OPAQUE
                 };

@@ -3,7 +3,7 @@
 use core::error::Error;
 use core::fmt::{self, Display, Formatter};
 
-use super::{GradientError, MAX_STOPS};
+use super::{GradientError, OpacityError, MAX_STOPS};
 use crate::geom::COORD_LIMIT_PX;
 
 impl Display for GradientError {
@@ -18,8 +18,9 @@ impl Display for GradientError {
             }
             Self::Coord(p) => write!(
                 f,
-                "point ({}, {}) in 1/1024 px is outside ±{COORD_LIMIT_PX} px",
-                p.x, p.y
+                "gradient point ({}, {}) px is outside ±{COORD_LIMIT_PX} px",
+                crate::error::Px::fine(p.x),
+                crate::error::Px::fine(p.y)
             ),
             Self::Radius { radius } => write!(f, "gradient radius {radius} is negative"),
         }
@@ -27,3 +28,15 @@ impl Display for GradientError {
 }
 
 impl Error for GradientError {}
+
+impl Display for OpacityError {
+    fn fmt(&self, f: &mut Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::ZeroDenominator { num } => {
+                write!(f, "opacity {num}/0: the denominator is zero")
+            }
+        }
+    }
+}
+
+impl Error for OpacityError {}
