@@ -49,6 +49,8 @@ pub enum DrawError {
     /// A [`TriangleList`](crate::canvas::TriangleList) has no room for
     /// another triangle.
     ListFull,
+    /// An image was not drawn (its data, format or transform).
+    Image(crate::image::ImageError),
 }
 
 impl From<CoordError> for DrawError {
@@ -79,6 +81,7 @@ impl Display for DrawError {
             Self::ListFull => f.write_str("triangle list is full"),
             Self::BadIndex => f.write_str("a mesh triangle names a point the mesh does not have"),
             Self::Stroke(e) => e.fmt(f),
+            Self::Image(e) => e.fmt(f),
         }
     }
 }
@@ -88,6 +91,7 @@ impl Error for DrawError {
         match self {
             Self::Coord(e) => Some(e),
             Self::Stroke(e) => Some(e),
+            Self::Image(e) => Some(e),
             _ => None,
         }
     }

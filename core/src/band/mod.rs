@@ -56,6 +56,7 @@
 mod depth;
 mod errors;
 mod gradient;
+pub(crate) mod image;
 mod pixels;
 mod sweep;
 mod zsweep;

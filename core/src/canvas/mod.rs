@@ -23,6 +23,7 @@
 
 mod cache;
 mod gradient;
+mod image;
 mod list;
 pub(crate) mod paths;
 mod retained;
