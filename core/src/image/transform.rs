@@ -129,19 +129,44 @@ pub(crate) struct Mapping {
     pub height: i32,
 }
 
+/// `v / 2^30` rounded to nearest (halves up).
+fn round_q30(v: i64) -> i64 {
+    (v >> 1).wrapping_add(1 << 28) >> 29
+}
+
 /// Q32 texels of one texel.
 const ONE_Q32: i64 = 1 << 32;
 
 impl Mapping {
     /// The mapping of an image of `(w, h)` texels under `t`.
     pub(crate) fn new(t: &ImageTransform, (w, h): (u16, u16)) -> Result<Self, ImageFault> {
-        let sx = i128::from(t.scale.0.check()?);
-        let sy = i128::from(t.scale.1.check()?);
+        // Position in the coordinate range, pivot within 2^24 fine texels
+        // (4 times the largest image): every product below fits in i64.
+        const PIVOT_LIMIT: i32 = 1 << 24;
+        if !t.position.in_range()
+            || t.pivot.x.unsigned_abs() > PIVOT_LIMIT as u32
+            || t.pivot.y.unsigned_abs() > PIVOT_LIMIT as u32
+        {
+            return Err(ImageFault::Range);
+        }
+        let sx = i64::from(t.scale.0.check()?);
+        let sy = i64::from(t.scale.1.check()?);
         let binary = t.angle.binary().rem_euclid(1 << 32) as u32;
-        let (c, s) = cos_sin(binary);
-        let (c, s) = (i128::from(c), i128::from(s));
-        // Q30 * 2^18 / Q16 = Q32.
-        let inv = |n: i128, d: i128| div_round(n << 18, d) as i64;
+        // No rotation: no series (and exact).
+        let (c, s) = if binary == 0 {
+            (1i64 << 30, 0)
+        } else {
+            cos_sin(binary)
+        };
+        // Q30 * 2^18 / Q16 = Q32 (|c| <= 2^30: the numerator below 2^49);
+        // a scale of exactly 1 divides by nothing.
+        let inv = |n: i64, d: i64| {
+            if d == 1 << 16 {
+                n << 2
+            } else {
+                div_round(i128::from(n << 18), i128::from(d)) as i64
+            }
+        };
         let (ux, uy, vx, vy) = (inv(c, sx), inv(s, sx), inv(-s, sy), inv(c, sy));
         let (px, py) = (i64::from(t.position.x), i64::from(t.position.y));
         let half = 1i64 << (FINE_BITS - 1);
@@ -151,13 +176,27 @@ impl Mapping {
         let k = |a: i64, b: i64| (a * (half - px) + b * (half - py)) >> FINE_BITS;
         let u = [pivot(t.pivot.x) + k(ux, uy), ux, uy];
         let v = [pivot(t.pivot.y) + k(vx, vy), vx, vy];
-        // Forward: position + R S (t - pivot), fine units, i128 (Q30 *
-        // Q16 * fine).
+        // Forward: position + R S (t - pivot), fine units: the matrix in
+        // Q30 (|c sx| >> 16 <= 2^38), times offsets below 2^24 fine units,
+        // in i64; the Q30 truncation moves a corner by under 2^-6 fine
+        // units.
+        let (fc_x, fs_x, fs_y, fc_y) = (
+            (c * sx) >> 16,
+            (s * sx) >> 16,
+            (s * sy) >> 16,
+            (c * sy) >> 16,
+        );
         let corner = |tu: i32, tv: i32| -> Result<FinePoint, ImageFault> {
-            let du = i128::from(tu) * (1 << FINE_BITS) - i128::from(t.pivot.x);
-            let dv = i128::from(tv) * (1 << FINE_BITS) - i128::from(t.pivot.y);
-            let x = i128::from(px) + div_round(c * sx * du - s * sy * dv, 1 << 46);
-            let y = i128::from(py) + div_round(s * sx * du + c * sy * dv, 1 << 46);
+            let du = i64::from(tu) * (1 << FINE_BITS) - i64::from(t.pivot.x);
+            let dv = i64::from(tv) * (1 << FINE_BITS) - i64::from(t.pivot.y);
+            // |du|, |dv| < 2^25: a product beyond i64 lies far beyond the
+            // range anyway.
+            let m =
+                |a: i64, b: i64, c: i64, d: i64| a.checked_mul(b)?.checked_add(c.checked_mul(d)?);
+            let (Some(x), Some(y)) = (m(fc_x, du, -fs_y, dv), m(fs_x, du, fc_y, dv)) else {
+                return Err(ImageFault::Range);
+            };
+            let (x, y) = (px + round_q30(x), py + round_q30(y));
             match (i32::try_from(x), i32::try_from(y)) {
                 (Ok(x), Ok(y)) if FinePoint::new(x, y).in_range() => Ok(FinePoint::new(x, y)),
                 _ => Err(ImageFault::Range),
@@ -283,6 +322,19 @@ mod tests {
             ..ImageTransform::default()
         };
         assert_eq!(Mapping::new(&t, (8, 8)).err(), Some(ImageFault::Range));
+        for (position, pivot) in [
+            (FinePoint::new(i32::MIN, 0), FinePoint::new(0, 0)),
+            (FinePoint::new(0, 0), FinePoint::new(i32::MAX, i32::MIN)),
+            (FinePoint::new(0, 0), FinePoint::new(1 << 24, -(1 << 24))),
+        ] {
+            let t = ImageTransform {
+                position,
+                pivot,
+                scale: (Scale::MAX, Scale::MIN),
+                angle: Degrees::new(45),
+            };
+            assert_eq!(Mapping::new(&t, (4096, 4096)).err(), Some(ImageFault::Range));
+        }
         let t = ImageTransform {
             scale: (Scale::from_ratio(1, 8), Scale::ONE),
             ..ImageTransform::default()
