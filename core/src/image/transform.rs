@@ -333,7 +333,10 @@ mod tests {
                 scale: (Scale::MAX, Scale::MIN),
                 angle: Degrees::new(45),
             };
-            assert_eq!(Mapping::new(&t, (4096, 4096)).err(), Some(ImageFault::Range));
+            assert_eq!(
+                Mapping::new(&t, (4096, 4096)).err(),
+                Some(ImageFault::Range)
+            );
         }
         let t = ImageTransform {
             scale: (Scale::from_ratio(1, 8), Scale::ONE),
