@@ -598,3 +598,100 @@ fn a_clip_shape_bounds_what_is_drawn() {
         }
     }
 }
+
+/// A QOI file of `rgba` (`w x h`): runs of equal texels and QOI_OP_RGBA
+/// for the rest (a valid QOI stream, written here).
+fn qoi(rgba: &[u8], w: u32, h: u32) -> Vec<u8> {
+    let mut f = b"qoif".to_vec();
+    f.extend_from_slice(&w.to_be_bytes());
+    f.extend_from_slice(&h.to_be_bytes());
+    f.extend_from_slice(&[4, 0]);
+    let mut prev = [0u8, 0, 0, 255];
+    let mut run = 0u8;
+    for p in rgba.chunks_exact(4) {
+        if p == prev && run < 62 {
+            run += 1;
+            continue;
+        }
+        if run > 0 {
+            f.push(0xc0 | (run - 1));
+            run = 0;
+        }
+        if p == prev {
+            run = 1;
+            continue;
+        }
+        f.push(0xff);
+        f.extend_from_slice(p);
+        prev = [p[0], p[1], p[2], p[3]];
+    }
+    if run > 0 {
+        f.push(0xc0 | (run - 1));
+    }
+    f.extend_from_slice(&[0, 0, 0, 0, 0, 0, 0, 1]);
+    f
+}
+
+/// A QOI image decoded row by row into a row cache draws the pixels of
+/// the same texels in memory, in every band height; a band needing more
+/// rows than the cache holds, or rows above its window (the image upside
+/// down), is refused with a typed error and draws nothing.
+#[test]
+fn qoi_images_decode_row_by_row_into_a_row_cache() {
+    use softedge::image::QoiImage;
+    let mut rng = Lcg(0x9017);
+    let (w, h) = (20u16, 30u16);
+    // Runs of equal texels, so the stream has runs.
+    let mut rgba = Vec::new();
+    while rgba.len() < 4 * usize::from(w) * usize::from(h) {
+        let p = [
+            rng.below(256) as u8,
+            rng.below(256) as u8,
+            90,
+            rng.below(256) as u8,
+        ];
+        for _ in 0..1 + rng.below(5) {
+            rgba.extend_from_slice(&p);
+        }
+    }
+    rgba.truncate(4 * usize::from(w) * usize::from(h));
+    let file = qoi(&rgba, u32::from(w), u32::from(h));
+    let raw = RawImage::<format::Rgba8888>::new(&rgba, w, h).unwrap();
+    let t = (
+        FinePoint::from_px(40, 40),
+        FinePoint::new(10 * 1024, 15 * 1024),
+        Scale::from_ratio(3, 2),
+        Scale::from_ratio(3, 2),
+        20 << 16,
+    );
+    for rows in [1, 4, 16] {
+        let want = render::<3>(rows, [0, 300, 0], |c| c.draw_image(&draw_with(&raw, t))).0;
+        let mut cache = vec![0u8; 4 * usize::from(w) * 24];
+        let img = QoiImage::new(&file, &mut cache).unwrap();
+        let (got, err) = render::<3>(rows, [0, 300, 0], |c| c.draw_image(&draw_with(&img, t)));
+        assert_eq!(err, None, "{rows} rows");
+        assert!(got == want, "{rows} rows");
+    }
+    // Too small a cache for a 16-row band of this image.
+    let mut cache = vec![0u8; 4 * usize::from(w) * 4];
+    let img = QoiImage::new(&file, &mut cache).unwrap();
+    let (got, err) = render::<3>(16, [0, 300, 0], |c| c.draw_image(&draw_with(&img, t)));
+    assert!(
+        matches!(err, Some(DrawError::Image(e)) if matches!(e.fault, ImageFault::RowCache { .. })),
+        "{err:?}"
+    );
+    // Upside down: each band needs rows above the last band's.
+    let mut cache = vec![0u8; 4 * usize::from(w) * 30];
+    let img = QoiImage::new(&file, &mut cache).unwrap();
+    let flipped = (t.0, t.1, t.2, t.3, 180 << 16);
+    let (_, err) = render::<3>(4, [0, 300, 0], |c| c.draw_image(&draw_with(&img, flipped)));
+    assert!(
+        matches!(err, Some(DrawError::Image(e)) if matches!(e.fault, ImageFault::RandomAccess { .. })),
+        "{err:?}"
+    );
+    let _ = got;
+    assert_eq!(
+        QoiImage::new(b"qoix", &mut [0u8; 8]).err(),
+        Some(ImageFault::Unsupported)
+    );
+}

@@ -69,6 +69,16 @@ pub(crate) trait ImageRuns<const C: usize>: core::fmt::Debug {
     fn compose(&self, px: &mut [i32], k: i32, x: i32, y: i32, op: ComposeOp, bg: [u16; C]);
 }
 
+/// How a run's pixels take their samples (chosen per run; one pixel loop
+/// per sampler, the choice a branch per pixel: a loop per operation would
+/// triple each sampler's code, too much for a Cortex-M0's flash).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Mode {
+    OverWhole,
+    OverPart,
+    Add,
+}
+
 impl<const C: usize, T: TexelRun<C>> ImageRuns<C> for T {
     fn compose(&self, px: &mut [i32], k: i32, x: i32, y: i32, op: ComposeOp, bg: [u16; C]) {
         if k == SKIP {
@@ -76,19 +86,18 @@ impl<const C: usize, T: TexelRun<C>> ImageRuns<C> for T {
         }
         let whole = k == WHOLE;
         let k = if whole { COVER_ONE } else { k };
-        match op {
-            ComposeOp::Over(_) if whole => run(self, px, x, y, |p, t| over_whole(self, p, t)),
-            ComposeOp::Over(_) => run(self, px, x, y, |p, t| over_part(self, p, t, k)),
-            ComposeOp::Add(_) | ComposeOp::Accumulate(_) => {
-                let base = if matches!(op, ComposeOp::Add(_)) {
-                    bg.map(|b| i32::from(b) << COVER_BITS)
-                } else {
-                    [0; C]
-                };
-                run(self, px, x, y, |p, t| add(self, p, t, k, &base));
-            }
-            ComposeOp::Attenuate(_) => {}
-        }
+        let (mode, base) = match op {
+            ComposeOp::Over(_) if whole => (Mode::OverWhole, [0; C]),
+            ComposeOp::Over(_) => (Mode::OverPart, [0; C]),
+            ComposeOp::Add(_) => (Mode::Add, bg.map(|b| i32::from(b) << COVER_BITS)),
+            ComposeOp::Accumulate(_) => (Mode::Add, [0; C]),
+            ComposeOp::Attenuate(_) => return,
+        };
+        run(self, px, x, y, |p, t| match mode {
+            Mode::OverWhole => over_whole(self, p, t),
+            Mode::OverPart => over_part(self, p, t, k),
+            Mode::Add => add(self, p, t, k, &base),
+        });
     }
 }
 

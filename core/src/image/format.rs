@@ -297,6 +297,12 @@ impl<F: sealed::Decode + Default> sealed::Decode for PlaneAlpha<F> {
     }
 }
 
+/// 8-bit `r, g, b, a` (straight alpha) decoded as [`Rgba8888`] does.
+#[inline(always)]
+pub(crate) fn rgba(t: [u8; 4]) -> Lin {
+    <Rgba8888 as sealed::Decode>::decode(u32::from_be_bytes(t), u8::MAX, 0)
+}
+
 /// A texel's linear luminance (Rec. 709 weights of
 /// [`luminance`](crate::color::srgb::luminance)).
 #[inline(always)]

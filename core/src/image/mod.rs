@@ -50,12 +50,14 @@
 mod drawable;
 mod error;
 pub mod format;
+mod qoi;
 mod sample;
 mod source;
 mod transform;
 
 pub use drawable::AaImage;
 pub use error::{ImageError, ImageFault};
+pub use qoi::QoiImage;
 #[cfg(feature = "embedded-graphics")]
 pub use source::Pixels;
 pub use source::{ImageSource, RawImage};
@@ -115,17 +117,15 @@ pub(crate) mod sealed {
     /// An image source.
     pub trait Source {
         /// Its texels for a band.
-        type Fetch<'f>: Fetch
-        where
-            Self: 'f;
+        type Fetch<'f>: Fetch;
         /// Width and height, texels.
         fn size(&self) -> (u16, u16);
         /// Calls `f` with texels holding at least rows `rows` (clipped
         /// to the image; a source in memory holds them all).
-        fn with_rows<'s, R>(
-            &'s self,
+        fn with_rows<R>(
+            &self,
             rows: core::ops::Range<i32>,
-            f: impl FnOnce(&Self::Fetch<'s>) -> R,
+            f: impl FnOnce(&Self::Fetch<'_>) -> R,
         ) -> Result<R, super::ImageFault>;
     }
 }

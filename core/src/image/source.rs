@@ -143,17 +143,14 @@ impl<F: Decode> Fetch for RawTexels<'_, F> {
 }
 
 impl<'a, F: TexelFormat> Source for RawImage<'a, F> {
-    type Fetch<'f>
-        = RawTexels<'a, F>
-    where
-        Self: 'f;
+    type Fetch<'f> = RawTexels<'a, F>;
     fn size(&self) -> (u16, u16) {
         (self.width, self.height)
     }
-    fn with_rows<'s, R>(
-        &'s self,
+    fn with_rows<R>(
+        &self,
         _rows: Range<i32>,
-        f: impl FnOnce(&Self::Fetch<'s>) -> R,
+        f: impl FnOnce(&Self::Fetch<'_>) -> R,
     ) -> Result<R, ImageFault> {
         check_size(self.width, self.height)?;
         if F::PLANE && self.alpha.len() < usize::from(self.width) * usize::from(self.height) {
@@ -214,6 +211,24 @@ mod eg {
         }
     }
 
+    /// An embedded-graphics image held by value (a copy of an `ImageRaw`).
+    #[derive(Debug, Clone, Copy)]
+    pub struct Owned<T>(pub T);
+
+    impl<T> Fetch for Owned<T>
+    where
+        T: GetPixel,
+        T::Color: IntoLinear<3>,
+    {
+        const OPAQUE: bool = true;
+        const MASK: bool = false;
+        const GRAY: bool = false;
+        #[inline]
+        fn texel(&self, x: i32, y: i32) -> Lin {
+            Pixels(&self.0).texel(x, y)
+        }
+    }
+
     /// The size of an e-g image, clamped to what softedge draws (a larger
     /// one is refused).
     fn eg_size<T: OriginDimensions>(t: &T) -> (u16, u16) {
@@ -227,17 +242,14 @@ mod eg {
         T: GetPixel + OriginDimensions,
         T::Color: IntoLinear<3>,
     {
-        type Fetch<'f>
-            = Pixels<'a, T>
-        where
-            Self: 'f;
+        type Fetch<'f> = Pixels<'a, T>;
         fn size(&self) -> (u16, u16) {
             eg_size(self.0)
         }
-        fn with_rows<'s, R>(
-            &'s self,
+        fn with_rows<R>(
+            &self,
             _rows: Range<i32>,
-            f: impl FnOnce(&Self::Fetch<'s>) -> R,
+            f: impl FnOnce(&Self::Fetch<'_>) -> R,
         ) -> Result<R, ImageFault> {
             let (w, h) = self.size();
             check_size(w, h)?;
@@ -247,25 +259,22 @@ mod eg {
 
     impl<'a, C, BO> Source for ImageRaw<'a, C, BO>
     where
-        C: PixelColor + From<<C as PixelColor>::Raw> + IntoLinear<3>,
-        BO: ByteOrder,
+        C: PixelColor + From<<C as PixelColor>::Raw> + IntoLinear<3> + Copy,
+        BO: ByteOrder + Copy,
         ImageRaw<'a, C, BO>: GetPixel<Color = C> + OriginDimensions,
     {
-        type Fetch<'f>
-            = Pixels<'f, ImageRaw<'a, C, BO>>
-        where
-            Self: 'f;
+        type Fetch<'f> = Owned<ImageRaw<'a, C, BO>>;
         fn size(&self) -> (u16, u16) {
             eg_size(self)
         }
-        fn with_rows<'s, R>(
-            &'s self,
+        fn with_rows<R>(
+            &self,
             _rows: Range<i32>,
-            f: impl FnOnce(&Self::Fetch<'s>) -> R,
+            f: impl FnOnce(&Self::Fetch<'_>) -> R,
         ) -> Result<R, ImageFault> {
             let (w, h) = eg_size(self);
             check_size(w, h)?;
-            Ok(f(&Pixels(self)))
+            Ok(f(&Owned(*self)))
         }
     }
 }
