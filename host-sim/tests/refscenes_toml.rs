@@ -132,9 +132,6 @@ fn to_toml(scene: &Scene) -> String {
                     num(f64::from(i.rotate) / 65536.0),
                     num(f64::from(i.opacity) / 4096.0),
                 );
-                if let Some(c) = i.tint {
-                    let _ = writeln!(t, "tint = {}", color(scene, c));
-                }
             }
             Shape::Object(o) => {
                 let c = &o.camera;

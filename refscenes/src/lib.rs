@@ -207,8 +207,6 @@ pub struct ImageShape {
     pub rotate: i32,
     /// 1/4096.
     pub opacity: u16,
-    /// A tint (linear 12-bit): the image's alpha as a mask of it.
-    pub tint: Option<[u16; 3]>,
 }
 
 /// Largest mesh a reference [`Object3d`] may have (vertices, triangles):
@@ -406,13 +404,18 @@ fn draw<const C: usize>(
     }
 }
 
-/// Draws an image into the band through a canvas, added.
+/// Draws an image into the band through a canvas, added. RGB scenes only
+/// (a gray scene draws none): each instance of the image code costs the
+/// Cortex-M0 firmware's 256 KiB of flash some 18 KB.
 #[inline(never)]
 fn draw_image<const C: usize>(
     i: &ImageShape,
     buf: &mut BandBuffer<'_, C>,
     style: &RenderStyle,
 ) -> Result<(), DrawError> {
+    if C != 3 {
+        return Ok(());
+    }
     use softedge::image::{format::Rgba8888, AaImage, ImageError, RawImage, Scale};
     let src = RawImage::<Rgba8888>::new(i.rgba, i.width, i.height).map_err(|fault| {
         DrawError::Image(ImageError {
@@ -429,10 +432,7 @@ fn draw_image<const C: usize>(
         .opacity(softedge::style::Opacity::from_4096ths(i.opacity))
         .blend(softedge::style::Blend::Add)
         .name(i.file);
-    match i.tint {
-        Some(t) => canvas.draw_image(&img.tint(t)),
-        None => canvas.draw_image(&img),
-    }
+    canvas.draw_image(&img)
 }
 
 /// Builds, lights and projects a 3D object, drawing its front faces into

@@ -642,7 +642,6 @@ const IMAGE_ROTATED: crate::ImageShape = crate::ImageShape {
     scale: (3 << 15, 3 << 15),
     rotate: 30 << 16,
     opacity: 4096,
-    tint: None,
 };
 
 /// Minified (the box filter).
@@ -654,13 +653,12 @@ const IMAGE_SMALL: crate::ImageShape = crate::ImageShape {
     ..IMAGE_ROTATED
 };
 
-/// Its alpha as a mask of a tint, magnified.
+/// Magnified, unrotated, at half opacity.
 const IMAGE_TINTED: crate::ImageShape = crate::ImageShape {
     center: (48 * 1024, 34 * 1024 + 100),
     scale: (5 << 14, 5 << 14),
     rotate: 0,
-    opacity: 4096,
-    tint: Some([F, 2600, 300]),
+    opacity: 2048,
     ..IMAGE_ROTATED
 };
 
@@ -675,7 +673,7 @@ const IMAGE_SHAPES: [Shape; 4] = [
 ];
 
 /// Images (issue 35): an RGBA image rotated and magnified (bilinear),
-/// minified and rotated (box), and its alpha as a tinted mask, over a
+/// minified and rotated (box), and magnified at half opacity, over a
 /// triangle, in 4-row bands.
 pub const IMAGE: Scene = Scene {
     name: "image",

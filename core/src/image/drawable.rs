@@ -5,8 +5,18 @@ use super::transform::Mapping;
 use super::{ImageFault, ImageSource, ImageTransform, Scale};
 use crate::color::IntoLinear;
 use crate::geom::{FinePoint, FINE_BITS};
-use crate::path::{Degrees, Rectangle};
+use crate::path::Degrees;
 use crate::style::{Blend, Opacity};
+
+/// No clip shape: an [`AaImage`] fills its own transformed rectangle
+/// (its default; a shape of no outline, so that the clip's code is not
+/// built for images without one).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct NoClip;
+
+impl crate::path::Shape for NoClip {
+    fn describe<P: crate::geom::PathSink + ?Sized>(&self, _: &mut P) {}
+}
 
 /// An image drawn anti-aliased: filtered in linear light under an affine
 /// transform, its outline by exact area, composed like a shape.
@@ -41,7 +51,7 @@ use crate::style::{Blend, Opacity};
 /// # Ok::<(), softedge::DrawError>(())
 /// ```
 #[derive(Debug, Clone, Copy)]
-pub struct AaImage<'a, S: ?Sized, K = Rectangle> {
+pub struct AaImage<'a, S: ?Sized, K = NoClip> {
     source: &'a S,
     transform: ImageTransform,
     tint: Option<[u16; 3]>,

@@ -55,7 +55,7 @@ mod sample;
 mod source;
 mod transform;
 
-pub use drawable::AaImage;
+pub use drawable::{AaImage, NoClip};
 pub use error::{ImageError, ImageFault};
 pub use qoi::QoiImage;
 #[cfg(feature = "embedded-graphics")]

@@ -221,7 +221,9 @@ impl<F: Fetch, const C: usize> TexelRun<C> for Bilinear<'_, F, C> {
         };
         (at(&m.u), at(&m.v))
     }
-    #[inline(always)]
+    // Out of line: one copy of the filter however many operations the
+    // run's loop has (a call a pixel, beside some 300 instructions).
+    #[inline(never)]
     fn next(&self, cur: &mut (i64, i64)) -> Texel<C> {
         let (u, v) = *cur;
         cur.0 = u.wrapping_add(self.map.u[1]);
@@ -350,6 +352,9 @@ impl<F: Fetch, const C: usize> TexelRun<C> for BoxRun<'_, F, C> {
         };
         (at(&m.u), at(&m.v))
     }
+    // Out of line: many texels a pixel, the call is nothing beside them,
+    // and the code is not copied into the run's loop.
+    #[inline(never)]
     fn next(&self, cur: &mut (i64, i64)) -> Texel<C> {
         let (u, v) = *cur;
         cur.0 = u.wrapping_add(self.map.u[1]);
