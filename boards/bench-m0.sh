@@ -83,6 +83,10 @@ $1 == "cache" {
 }
 $1 == "cache_listed" { lcache[$2, $4] = $6 }
 $1 == "workload" { tris[$2] = $3; area2[$2] = $4; marginal2[$2] = $5 }
+$1 == "image" {
+    if (!($2 in iseen)) { iseen[$2] = 1; iorder[++ni] = $2 }
+    image[$2] = $3; iarea[$2] = $4
+}
 $1 == "panel_shape_cache" { pcache_entries = $2; pcache_segments = $3 }
 $1 == "panel" {
     if (!($2 in pseen)) { pseen[$2] = 1; porder[++np] = $2 }
@@ -201,6 +205,20 @@ END {
         printf "| %s | %s | %s | %s | %s |\n", (r in slabel ? slabel[r] : r), \
             group(shape[r, "chart"] - shape[r, "none"]), group(shape[r, "chart"]), \
             group(shape[r, "chart_recorded"] - shape[r, "none"]), group(shape[r, "chart_recorded"])
+    }
+    ilabel["copy64"] = "64x64 Rgb565 sprite, unscaled at a whole pixel (copy)"
+    ilabel["rotated30"] = "64x64 Rgb565 sprite rotated 30° (bilinear)"
+    ilabel["icon48"] = "24-px 1-bpp icon scaled to 48 px, tinted (bilinear mask)"
+    if (ni > 0) {
+        printf "\nImages alone on a 240x240 Rgb565 frame (issue 35), softedge `AaImage`, 16-row bands; marginal = frame with the image - frame without it, per px = marginal / image pixels on screen:\n\n"
+        printf "| image | marginal | image px | per px | frame |\n| --- | ---: | ---: | ---: | ---: |\n"
+        for (i = 1; i <= ni; i++) {
+            k = iorder[i]
+            if (k == "none") continue
+            m = image[k] - image["none"]
+            printf "| %s | %s | %s | %s | %s |\n", (k in ilabel ? ilabel[k] : k), group(m), group(iarea[k]), perpx(m / iarea[k]), group(image[k])
+        }
+        printf "\n(frame without an image: %s)\n", group(image["none"])
     }
     rlabel["aa_rgb"] = "softedge AA, `render` / `render_window`, 16-row bands"
     rlabel["aa_rgb_recorded"] = "softedge AA, the same, the arcs and the disc recorded in the frame (26 112 B of segments)"

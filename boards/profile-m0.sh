@@ -69,6 +69,6 @@ timeout 300 qemu-system-arm -machine mps2-an385 -nographic \
     -semihosting-config enable=on,target=native -icount shift=0 \
     -plugin "$plugin,out=$out,on=$on,off=$off" \
     -kernel "$elf" -append "$renderer $workload $rows" \
-    | grep -E '^(insns|error)' || { echo "profile-m0.sh: the firmware run failed" >&2; exit 1; }
+    | grep -E '^(insns|image|error)' || { echo "profile-m0.sh: the firmware run failed" >&2; exit 1; }
 echo
 python3 "$here/tools/profile-report.py" "$elf" "$out" "$@"

@@ -165,6 +165,8 @@ pub enum DrawError {
         /// px (printed in px).
         point: FinePoint,
     },
+    /// An image was not drawn (its data, format or transform).
+    Image(crate::image::ImageError),
 }
 
 impl DrawError {
@@ -214,6 +216,7 @@ impl Display for DrawError {
             Self::ListFull => f.write_str("triangle list is full"),
             Self::BadIndex => f.write_str("a mesh triangle names a point the mesh does not have"),
             Self::Stroke(e) => e.fmt(f),
+            Self::Image(e) => e.fmt(f),
         }
     }
 }
@@ -223,6 +226,7 @@ impl Error for DrawError {
         match self {
             Self::Coord(e) => Some(e),
             Self::Stroke(e) => Some(e),
+            Self::Image(e) => Some(e),
             _ => None,
         }
     }

@@ -143,6 +143,7 @@ mod edge;
 mod error;
 pub mod geom;
 pub mod hsr;
+pub mod image;
 pub mod path;
 pub mod pixel_model;
 pub mod postfilter;

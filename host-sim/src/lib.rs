@@ -49,6 +49,7 @@
 pub mod font;
 pub mod gallery;
 pub mod image;
+pub mod image_item;
 pub mod memory;
 pub mod png_out;
 pub mod scene;

@@ -75,6 +75,9 @@ pub enum Primitive<const C: usize> {
     /// Text in an outline font (scene files' `[[text]]`), composed over
     /// what is drawn before it; hidden-surface removal leaves it out.
     Text(Box<crate::text_item::TextItem<C>>),
+    /// An image (scene files' `[[image]]`), composed over what is drawn
+    /// before it; hidden-surface removal leaves it out.
+    Image(Box<crate::image_item::ImageItem<C>>),
 }
 
 impl<const C: usize> Primitive<C> {
@@ -94,6 +97,7 @@ impl<const C: usize> Primitive<C> {
             Self::Depth(t) => t.draw(buf, style),
             Self::Line(l) | Self::DepthLine(l, _) => l.draw(buf, style),
             Self::Text(t) => t.draw(buf, style),
+            Self::Image(i) => i.draw(buf, style),
             Self::Polygon { vertices, colors } => {
                 let colors = match colors {
                     PolyColors::Flat(c) => PolygonColors::Flat(*c),
@@ -150,6 +154,7 @@ impl<const C: usize> Primitive<C> {
             }
             Self::Faded(p, a) => p.compose(canvas, blend, times(*a, opacity)),
             Self::Text(t) => t.compose(canvas, times(t.opacity, opacity)),
+            Self::Image(i) => i.compose(canvas, blend, opacity),
         }
     }
 
@@ -176,6 +181,7 @@ impl<const C: usize> Primitive<C> {
             Self::Faded(p, _) => p.depth_triangles(out)?,
             Self::Shape(_) => {}
             Self::Text(_) => {}
+            Self::Image(_) => {}
         }
         Ok(())
     }
@@ -277,7 +283,7 @@ impl<const C: usize> Scene<C> {
     pub fn draw_into<Col>(&self, canvas: &mut Canvas<'_, '_, C, Col>) -> Result<(), RenderError> {
         for (index, p) in self.primitives.iter().enumerate() {
             let legacy = match p {
-                Primitive::Shape(_) | Primitive::Faded(..) => false,
+                Primitive::Shape(_) | Primitive::Faded(..) | Primitive::Image(_) => false,
                 Primitive::Mesh(m) => m.opacity == Opacity::OPAQUE,
                 _ => true,
             };

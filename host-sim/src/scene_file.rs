@@ -47,6 +47,7 @@
 
 mod diag;
 mod display;
+mod image;
 mod objects;
 mod raw;
 mod shapes;
@@ -955,6 +956,7 @@ impl Checker<'_> {
         items.extend(objects::objects::<C>(self, file, width, height, faces)?);
         items.extend(shapes::shapes::<C>(self, file)?);
         items.extend(text::texts::<C>(self, file)?);
+        items.extend(image::images::<C>(self, file)?);
         // File order across tables (a stable sort keeps ties as read).
         items.sort_by_key(|(o, _)| o.span.start);
         let blend = self.blend(file.render.as_ref())?;

@@ -120,6 +120,19 @@ fn to_toml(scene: &Scene) -> String {
                     Fill::PerVertex(cs) => writeln!(t, "colors = {}", colors(scene, cs)),
                 };
             }
+            Shape::Image(i) => {
+                let _ = writeln!(
+                    t,
+                    "[[image]]\npath = \"{}\"\ncenter = [{}, {}]\nscale = [{}, {}]\nrotate = {}\nopacity = {}",
+                    i.file,
+                    num(f64::from(i.center.0) / 1024.0),
+                    num(f64::from(i.center.1) / 1024.0),
+                    num(f64::from(i.scale.0) / 65536.0),
+                    num(f64::from(i.scale.1) / 65536.0),
+                    num(f64::from(i.rotate) / 65536.0),
+                    num(f64::from(i.opacity) / 4096.0),
+                );
+            }
             Shape::Object(o) => {
                 let c = &o.camera;
                 let v3 = |v: softedge::scene3d::Vec3| {
@@ -190,6 +203,34 @@ fn scene_files_of_the_reference_scenes_are_up_to_date() {
             "{} is stale: regenerate with SOFTEDGE_BLESS=1 cargo test -p softedge-sim --test refscenes_toml",
             path.display()
         );
+    }
+}
+
+/// The PNG files of the scenes' images hold their texels (written when
+/// blessing).
+#[test]
+fn image_files_of_the_reference_scenes_hold_their_texels() {
+    let bless = std::env::var_os("SOFTEDGE_BLESS").is_some();
+    for scene in SCENES {
+        for shape in scene.shapes {
+            let Shape::Image(i) = shape else { continue };
+            let path = dir().join(i.file);
+            if bless {
+                let file = std::fs::File::create(&path).unwrap();
+                let mut enc = png::Encoder::new(file, u32::from(i.width), u32::from(i.height));
+                enc.set_color(png::ColorType::Rgba);
+                enc.set_depth(png::BitDepth::Eight);
+                enc.set_compression(png::Compression::Best);
+                let mut w = enc.write_header().unwrap();
+                w.write_image_data(i.rgba).unwrap();
+            }
+            let bytes = std::fs::read(&path).unwrap_or_default();
+            let img = softedge_sim::image_item::decode(&bytes).unwrap_or_else(|e| {
+                panic!("{}: {e}: regenerate with SOFTEDGE_BLESS=1", path.display())
+            });
+            assert_eq!((img.width, img.height), (i.width, i.height));
+            assert!(&*img.data == i.rgba, "{} is stale", path.display());
+        }
     }
 }
 

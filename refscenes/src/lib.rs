@@ -33,7 +33,9 @@ mod scenes;
 pub mod stream;
 
 pub use crc::{crc32, Crc32, POLY_REFLECTED, TABLE as CRC_TABLE};
-pub use scenes::{ALIASED, GOURAUD, LIMITS, LINES, MESH, ONEBIT, SEEDBOX, SPHERE3D, ZBUFFER};
+pub use scenes::{
+    ALIASED, GOURAUD, IMAGE, LIMITS, LINES, MESH, ONEBIT, SEEDBOX, SPHERE3D, ZBUFFER,
+};
 
 use softedge::hsr::{zbuffer_passes, DepthBuffer, DepthTriangle, HsrError, ZPass};
 use softedge::scene3d;
@@ -49,7 +51,7 @@ pub const MAX_SCENE_WIDTH: u16 = 96;
 
 /// Every reference scene, in the order the listings print them.
 pub const SCENES: &[&Scene] = &[
-    &GOURAUD, &MESH, &LINES, &ALIASED, &ONEBIT, &SEEDBOX, &LIMITS, &SPHERE3D, &ZBUFFER,
+    &GOURAUD, &MESH, &LINES, &ALIASED, &ONEBIT, &SEEDBOX, &LIMITS, &SPHERE3D, &ZBUFFER, &IMAGE,
 ];
 
 /// `i32`s of `acc` that every scene of [`SCENES`] fits in.
@@ -179,6 +181,32 @@ pub enum Shape {
     /// A triangle with a depth per vertex (larger is nearer), for scenes
     /// with the z-buffer.
     Depth([SubPoint; 3], [[u16; 3]; 3], [u16; 3]),
+    /// An image (`softedge::image::AaImage`), added to the band (seed
+    /// 000's accumulation, as every other shape here).
+    Image(&'static ImageShape),
+}
+
+/// An image of a scene: 8-bit RGBA texels (straight alpha, rows top to
+/// bottom), drawn by `softedge::image` as a `[[image]]` of a scene file
+/// draws the PNG file `file` (the same texels) beside the scene files.
+#[derive(Debug, Clone, Copy)]
+pub struct ImageShape {
+    /// Width, texels.
+    pub width: u16,
+    /// Height, texels.
+    pub height: u16,
+    /// `width x height x 4` bytes.
+    pub rgba: &'static [u8],
+    /// The PNG file of the same texels, in `refscenes/scenes/`.
+    pub file: &'static str,
+    /// Where the image's centre lands, 1/1024 px.
+    pub center: (i32, i32),
+    /// Horizontal and vertical scale, 1/65536.
+    pub scale: (u32, u32),
+    /// Clockwise, 1/65536 degree.
+    pub rotate: i32,
+    /// 1/4096.
+    pub opacity: u16,
 }
 
 /// Largest mesh a reference [`Object3d`] may have (vertices, triangles):
@@ -286,6 +314,7 @@ pub fn render<const C: usize>(
             for shape in scene.shapes {
                 match shape {
                     Shape::Object(o) => draw_object(o, scene, &mut buf)?,
+                    Shape::Image(i) => draw_image(i, &mut buf, &scene.style)?,
                     _ => draw(shape, &mut buf, &scene.style)?,
                 }
             }
@@ -367,11 +396,43 @@ fn draw<const C: usize>(
             let colors = colors.get(..n).unwrap_or(&[]);
             Polygon::new(v, PolygonColors::PerVertex(colors)).draw(buf, style)
         }
-        // Drawn by `draw_object`, which needs the scene's frame.
-        Shape::Object(_) => Ok(()),
+        // Drawn by `draw_object`, which needs the scene's frame, and by
+        // `draw_image`.
+        Shape::Object(_) | Shape::Image(_) => Ok(()),
         // Without the z-buffer, a depth triangle is a plain triangle.
         Shape::Depth(v, c, _) => Triangle::new(v, c.map(channels)).draw(buf, style),
     }
+}
+
+/// Draws an image into the band through a canvas, added. RGB scenes only
+/// (a gray scene draws none): each instance of the image code costs the
+/// Cortex-M0 firmware's 256 KiB of flash some 18 KB.
+#[inline(never)]
+fn draw_image<const C: usize>(
+    i: &ImageShape,
+    buf: &mut BandBuffer<'_, C>,
+    style: &RenderStyle,
+) -> Result<(), DrawError> {
+    if C != 3 {
+        return Ok(());
+    }
+    use softedge::image::{format::Rgba8888, AaImage, ImageError, RawImage, Scale};
+    let src = RawImage::<Rgba8888>::new(i.rgba, i.width, i.height).map_err(|fault| {
+        DrawError::Image(ImageError {
+            image: i.file,
+            fault,
+        })
+    })?;
+    let mut canvas = softedge::canvas::Canvas::new(buf, None);
+    canvas.set_style(*style);
+    let img = AaImage::new(&src)
+        .center(softedge::geom::FinePoint::new(i.center.0, i.center.1))
+        .scale_xy(Scale::from_bits(i.scale.0), Scale::from_bits(i.scale.1))
+        .rotate(softedge::path::Degrees::from_bits(i.rotate))
+        .opacity(softedge::style::Opacity::from_4096ths(i.opacity))
+        .blend(softedge::style::Blend::Add)
+        .name(i.file);
+    canvas.draw_image(&img)
 }
 
 /// Builds, lights and projects a 3D object, drawing its front faces into

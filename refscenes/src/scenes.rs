@@ -598,3 +598,92 @@ pub const ZBUFFER: Scene = Scene {
     shapes: &Z_SHAPES,
     zbuffer: true,
 };
+
+/// A 32x32 RGBA image (straight alpha): red along x, green along y, blue
+/// in 8-texel checks; alpha a disc of radius 14 about the centre, opaque
+/// inside radius 10 and fading to 0 at 14 (`refscenes/scenes/image32.png`
+/// holds the same texels).
+pub static IMAGE32: [u8; 32 * 32 * 4] = image32();
+
+const fn image32() -> [u8; 32 * 32 * 4] {
+    let mut d = [0u8; 32 * 32 * 4];
+    let mut j = 0;
+    while j < 32 {
+        let mut i = 0;
+        while i < 32 {
+            let k = 4 * (j * 32 + i);
+            d[k] = (i * 8) as u8;
+            d[k + 1] = (j * 8) as u8;
+            d[k + 2] = if (i / 8 + j / 8) % 2 == 0 { 230 } else { 40 };
+            // Twice the offsets of the texel centre from (16, 16).
+            let (dx, dy) = (2 * i as i32 + 1 - 32, 2 * j as i32 + 1 - 32);
+            let r2 = dx * dx + dy * dy;
+            d[k + 3] = if r2 <= 4 * 10 * 10 {
+                255
+            } else if r2 >= 4 * 14 * 14 {
+                0
+            } else {
+                // Linear in r^2 between the two radii.
+                (255 * (4 * 14 * 14 - r2) / (4 * (14 * 14 - 10 * 10))) as u8
+            };
+            i += 1;
+        }
+        j += 1;
+    }
+    d
+}
+
+const IMAGE_ROTATED: crate::ImageShape = crate::ImageShape {
+    width: 32,
+    height: 32,
+    rgba: &IMAGE32,
+    file: "image32.png",
+    center: (20 * 1024 + 512, 22 * 1024),
+    scale: (3 << 15, 3 << 15),
+    rotate: 30 << 16,
+    opacity: 4096,
+};
+
+/// Minified (the box filter).
+const IMAGE_SMALL: crate::ImageShape = crate::ImageShape {
+    center: (52 * 1024 + 256, 10 * 1024),
+    scale: (1 << 14, 3 << 13),
+    rotate: -(10 << 16),
+    opacity: 3072,
+    ..IMAGE_ROTATED
+};
+
+/// Magnified, unrotated, at half opacity.
+const IMAGE_TINTED: crate::ImageShape = crate::ImageShape {
+    center: (48 * 1024, 34 * 1024 + 100),
+    scale: (5 << 14, 5 << 14),
+    rotate: 0,
+    opacity: 2048,
+    ..IMAGE_ROTATED
+};
+
+const IMAGE_SHAPES: [Shape; 4] = [
+    Shape::Polygon(
+        &[s(0, 0), s(40 * S, 0), s(8 * S, 48 * S)],
+        Fill::Flat([600, 900, 1500]),
+    ),
+    Shape::Image(&IMAGE_ROTATED),
+    Shape::Image(&IMAGE_SMALL),
+    Shape::Image(&IMAGE_TINTED),
+];
+
+/// Images (issue 35): an RGBA image rotated and magnified (bilinear),
+/// minified and rotated (box), and magnified at half opacity, over a
+/// triangle, in 4-row bands.
+pub const IMAGE: Scene = Scene {
+    name: "image",
+    width: 64,
+    height: 48,
+    channels: 3,
+    format: Format::Rgb565,
+    band_rows: 4,
+    style: AA,
+    background: [200, 300, 600],
+    shapes: &IMAGE_SHAPES,
+    zbuffer: false,
+};

@@ -18,6 +18,7 @@
 //! shape <renderer> <none|circle|gauge|gauge_round> <instructions>
 //! redraw <renderer> <full|window> <instructions> <windows> <pixels> <SPI bytes>
 //! panel <band rows> <band buffer bytes> <whole|partial> <instructions>
+//! image <none|copy64|rotated30|icon48> <instructions> <image pixels>
 //! stack_bytes <n>
 //! done
 //! ```
@@ -54,6 +55,7 @@ use softedge::path::Segment;
 use softedge::BandBuffer;
 use softedge_board_common::{self as fw, insns::Counter, Line};
 use softedge_workloads::render::eg_side;
+use softedge_workloads::render::images;
 use softedge_workloads::render::softedge_side::{
     self, Buffers, ACC_LEN, COVER_LEN, LIST_LEN, OUT_LEN, SLOTS,
 };
@@ -235,6 +237,14 @@ fn main() -> ! {
             ui::eg_shape(shape, &mut *targets.stock);
             black_box(targets.stock.data());
             true
+        });
+    }
+
+    // Images (issue 35): each alone on the frame, and the frame without
+    // it, softedge in 16-row bands.
+    for image in images::Image::ALL {
+        bench.image(image, || {
+            images::softedge_image(image, &mut bufs).is_ok()
         });
     }
 
@@ -554,6 +564,23 @@ impl Bench<'_> {
             .dec(u64::from(spi.pixels))
             .text(" ")
             .dec(u64::from(spi.bytes()))
+            .print();
+    }
+
+    /// Measures a frame of one of the [`images`] cases and prints
+    /// `image <case> <n> <image pixels>`.
+    fn image(&mut self, image: images::Image, frame: impl FnOnce() -> bool) {
+        let Some((insns, ok)) =
+            self.measure("image", image.name(), 0, 0, images::BAND_ROWS, frame)
+        else {
+            return;
+        };
+        Self::tag(ok, "image ")
+            .text(image.name())
+            .text(" ")
+            .dec(insns)
+            .text(" ")
+            .dec(u64::from(image.area()))
             .print();
     }
 

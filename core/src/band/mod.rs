@@ -61,6 +61,7 @@
 mod depth;
 mod errors;
 mod gradient;
+pub(crate) mod image;
 mod pixels;
 mod sweep;
 pub(crate) mod tags;

@@ -47,6 +47,8 @@ pub(crate) enum Paint<'p, const C: usize> {
     Plane(&'p Plane<C>),
     /// A linear or radial gradient (`band/gradient.rs`).
     Gradient(&'p crate::style::Gradient<C>),
+    /// An image's texels, filtered (`band/image.rs`).
+    Image(&'p dyn super::image::ImageRuns<C>),
 }
 
 /// How a shape's coverage meets the band.
@@ -155,6 +157,13 @@ impl<const C: usize> BandBuffer<'_, C> {
             }
             (ComposeOp::Add(a) | ComposeOp::Accumulate(a), Paint::Gradient(g)) => {
                 self.sweep(y_lo, y_hi, rule, a, false, &GradientRun { g, op, bg });
+            }
+            (
+                ComposeOp::Over(a) | ComposeOp::Add(a) | ComposeOp::Accumulate(a),
+                Paint::Image(i),
+            ) => {
+                let run = super::image::ImageRun { image: *i, op, bg };
+                self.sweep(y_lo, y_hi, rule, a, matches!(op, ComposeOp::Over(_)), &run);
             }
             (ComposeOp::Attenuate(a), _) => {
                 self.sweep(y_lo, y_hi, rule, a, true, &Attenuate);
@@ -427,8 +436,8 @@ fn blend_over<const C: usize>(p: &mut [i32; C], f: &[i32; C], k: i32) {
 
 /// Factors that mark whole pixels of an opaque shape, and a share whose
 /// composite rounds to nothing (drawn, unchanged).
-const WHOLE: i32 = i32::MAX;
-const SKIP: i32 = i32::MIN;
+pub(super) const WHOLE: i32 = i32::MAX;
+pub(super) const SKIP: i32 = i32::MIN;
 
 /// A band row's pixels as a sweep composes them: the accumulator and tags
 /// of the whole row; `dense`: the band keeps no tags (see [`Palette`]).
@@ -524,7 +533,7 @@ fn compose_run<O: SpanOp<C>, const C: usize>(op: &O, px: &mut [i32], k: i32, (x,
 /// How one kind of span composes a run of pixels of factor `k` (see
 /// [`sweep_row`]), the first at frame pixel `(x, y)`: pixel by pixel for
 /// every [`SpanOp`], by its own stepping for a gradient.
-trait RunOp<const C: usize> {
+pub(super) trait RunOp<const C: usize> {
     fn run(&self, px: &mut [i32], k: i32, at: (i32, i32));
 }
 

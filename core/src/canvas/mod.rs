@@ -26,6 +26,7 @@
 
 mod cache;
 mod gradient;
+mod image;
 mod list;
 pub(crate) mod paths;
 mod retained;

@@ -122,7 +122,7 @@ pub mod segment;
 mod shape;
 pub mod stroke;
 pub mod svg;
-mod trig;
+pub(crate) mod trig;
 mod vector;
 
 pub use angle::Degrees;

@@ -39,6 +39,7 @@ mod display;
 mod flicker;
 mod gamma;
 mod hidden;
+mod images;
 mod lightness;
 mod models;
 mod objects;
@@ -139,7 +140,7 @@ impl std::error::Error for GalleryError {
 }
 
 /// Number of files [`write_gallery`] writes.
-pub const GALLERY_FILES: usize = 17;
+pub const GALLERY_FILES: usize = 18;
 
 /// Renders the gallery into `dir` (created if missing). `log` receives one
 /// progress line per image and one `wrote PATH (WxH)` line per file.
@@ -406,6 +407,11 @@ pub fn write_gallery(
     ));
     let sheet = compose2d::panel_sheet(scale)?;
     save("17-instrument-panel_rgb565-vs-oled.png", &sheet, log)?;
+    log(&format!(
+        "[18/{n}] images: a rotated needle sprite | tinted 1-bpp icons"
+    ));
+    let sheet = images::images_sheet(scale)?;
+    save("18-images_rotated-needle-tinted-icons.png", &sheet, log)?;
 
     Ok(written)
 }
@@ -1022,6 +1028,7 @@ mod tests {
             "15-compositing",
             "16-shapes-strokes",
             "17-instrument-panel",
+            "18-images",
         ] {
             assert!(names.iter().any(|n| n.starts_with(prefix)), "{prefix}");
         }

@@ -51,6 +51,28 @@ pub struct File {
     pub mesh: Vec<Spanned<Mesh>>,
     #[serde(default)]
     pub text: Vec<Spanned<Text>>,
+    #[serde(default)]
+    pub image: Vec<Spanned<Image>>,
+}
+
+/// `[[image]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Image {
+    pub path: Spanned<String>,
+    pub center: Nums,
+    pub scale: Option<Spanned<ScaleValue>>,
+    pub rotate: Option<Num>,
+    pub opacity: Option<Num>,
+    pub tint: Option<Color>,
+}
+
+/// A scale: one number for both axes, or `[sx, sy]`.
+#[derive(Debug, Deserialize)]
+#[serde(untagged)]
+pub enum ScaleValue {
+    One(f64),
+    Two([f64; 2]),
 }
 
 /// `[[text]]`.

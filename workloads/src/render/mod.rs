@@ -12,6 +12,7 @@
 //!   redrawn whole or in a dirty rectangle, by both (issues 16 and 15).
 
 pub mod eg_side;
+pub mod images;
 pub mod softedge_side;
 pub mod targets;
 pub mod ui;

@@ -1,0 +1,280 @@
+//! Image sources: softedge's [`RawImage`] (bytes in flash, read in place
+//! row by row), embedded-graphics images through their pixel access
+//! ([`Pixels`], and `ImageRaw` directly).
+
+use core::marker::PhantomData;
+use core::ops::Range;
+
+use super::format::TexelFormat;
+use super::sealed::{Decode, Fetch, Lin, Source};
+use super::{ImageFault, MAX_SIDE};
+
+/// Something an [`AaImage`](super::AaImage) can paint with: softedge's
+/// [`RawImage`], embedded-graphics' `ImageRaw` (and any
+/// `GetPixel + OriginDimensions` image through [`Pixels`], such as
+/// `tinybmp`'s `Bmp`), and row-cached sequential sources. Sealed; the
+/// open door for other images is embedded-graphics' `GetPixel`.
+pub trait ImageSource: Source {}
+
+impl<T: Source + ?Sized> ImageSource for T {}
+
+/// The checked size of an image.
+fn check_size(width: u16, height: u16) -> Result<(), ImageFault> {
+    if width == 0 || height == 0 || width > MAX_SIDE || height > MAX_SIDE {
+        return Err(ImageFault::Size {
+            width: u32::from(width),
+            height: u32::from(height),
+        });
+    }
+    Ok(())
+}
+
+/// An image in memory (usually a `&'static [u8]` in flash): rows of
+/// `ceil(width * bits / 8)` bytes, top to bottom, texels in one of the
+/// [`format`](super::format)s; read in place, only the rows a band needs.
+///
+/// ```
+/// use softedge::image::{format, RawImage};
+/// // A 2x2 Rgb565 image (little endian): red, green / blue, white.
+/// static DATA: [u8; 8] = [0x00, 0xf8, 0xe0, 0x07, 0x1f, 0x00, 0xff, 0xff];
+/// let img = RawImage::<format::Rgb565>::new(&DATA, 2, 2).unwrap();
+/// assert_eq!(img.size(), (2, 2));
+/// // A 1-bpp mask, 12 texels a row: two bytes a row.
+/// let mask = RawImage::<format::Alpha1>::new(&[0xff, 0xf0, 0x80, 0x10], 12, 2).unwrap();
+/// assert_eq!(mask.stride(), 2);
+/// ```
+#[derive(Debug, Clone, Copy)]
+pub struct RawImage<'a, F> {
+    data: &'a [u8],
+    alpha: &'a [u8],
+    width: u16,
+    height: u16,
+    stride: usize,
+    key: u32,
+    format: PhantomData<F>,
+}
+
+impl<'a, F: TexelFormat> RawImage<'a, F> {
+    /// The image of `width x height` texels in `data`; an error if the
+    /// size is empty or above [`MAX_SIDE`], or `data` is too short.
+    pub fn new(data: &'a [u8], width: u16, height: u16) -> Result<Self, ImageFault> {
+        check_size(width, height)?;
+        let stride = (usize::from(width) * F::BITS as usize).div_ceil(8);
+        let needed = stride * usize::from(height);
+        if data.len() < needed {
+            return Err(ImageFault::Truncated {
+                needed: needed as u32,
+                have: u32::try_from(data.len()).unwrap_or(u32::MAX),
+            });
+        }
+        Ok(Self {
+            data,
+            alpha: &[],
+            width,
+            height,
+            stride,
+            key: u32::MAX,
+            format: PhantomData,
+        })
+    }
+
+    /// The same image with a separate alpha plane (one byte a texel, rows
+    /// of `width` bytes; read by the [`PlaneAlpha`](super::format::PlaneAlpha)
+    /// formats); an error if it is too short.
+    pub fn with_alpha_plane(mut self, alpha: &'a [u8]) -> Result<Self, ImageFault> {
+        let needed = usize::from(self.width) * usize::from(self.height);
+        if alpha.len() < needed {
+            return Err(ImageFault::Truncated {
+                needed: needed as u32,
+                have: u32::try_from(alpha.len()).unwrap_or(u32::MAX),
+            });
+        }
+        self.alpha = alpha;
+        Ok(self)
+    }
+
+    /// The same image with a colour key: the raw texel value (an Rgb565
+    /// word, an Rgb888 `0xrrggbb`) that the [`Keyed`](super::format::Keyed)
+    /// formats draw transparent.
+    pub const fn with_color_key(mut self, key: u32) -> Self {
+        self.key = key;
+        self
+    }
+
+    /// Width and height, texels.
+    pub const fn size(&self) -> (u16, u16) {
+        (self.width, self.height)
+    }
+
+    /// Bytes per row.
+    pub const fn stride(&self) -> usize {
+        self.stride
+    }
+}
+
+/// A [`RawImage`]'s texels.
+#[derive(Debug)]
+pub struct RawTexels<'a, F> {
+    image: RawImage<'a, F>,
+}
+
+impl<F: Decode> Fetch for RawTexels<'_, F> {
+    const OPAQUE: bool = F::OPAQUE;
+    const MASK: bool = F::MASK;
+    const GRAY: bool = F::GRAY;
+    #[inline(always)]
+    fn texel(&self, x: i32, y: i32) -> Lin {
+        let i = &self.image;
+        let (x, y) = (x as usize, y as usize);
+        let raw = i.data.get(y * i.stride..).and_then(|row| F::raw(row, x));
+        let Some(raw) = raw else {
+            return Lin { c: [0; 3], a: 0 };
+        };
+        let plane = if F::PLANE {
+            match i.alpha.get(y * usize::from(i.width) + x) {
+                Some(&a) => a,
+                None => 0,
+            }
+        } else {
+            u8::MAX
+        };
+        F::decode(raw, plane, i.key)
+    }
+}
+
+impl<'a, F: TexelFormat> Source for RawImage<'a, F> {
+    type Fetch<'f> = RawTexels<'a, F>;
+    fn size(&self) -> (u16, u16) {
+        (self.width, self.height)
+    }
+    fn with_rows<R>(
+        &self,
+        _rows: Range<i32>,
+        f: impl FnOnce(&Self::Fetch<'_>) -> R,
+    ) -> Result<R, ImageFault> {
+        check_size(self.width, self.height)?;
+        if F::PLANE && self.alpha.len() < usize::from(self.width) * usize::from(self.height) {
+            return Err(ImageFault::Truncated {
+                needed: u32::from(self.width) * u32::from(self.height),
+                have: u32::try_from(self.alpha.len()).unwrap_or(u32::MAX),
+            });
+        }
+        Ok(f(&RawTexels { image: *self }))
+    }
+}
+
+/// An embedded-graphics image read through its pixel access
+/// (`GetPixel`: `ImageRaw`, `tinybmp`'s `Bmp`, your own), each pixel an
+/// sRGB colour ([`IntoLinear`](crate::color::IntoLinear)), opaque.
+///
+/// ```
+/// use embedded_graphics::image::ImageRawBE;
+/// use embedded_graphics::pixelcolor::Rgb888;
+/// use softedge::image::{AaImage, Pixels};
+/// static DATA: [u8; 12] = [255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255];
+/// let raw = ImageRawBE::<Rgb888>::new(&DATA, 2);
+/// let pixels = Pixels(&raw);
+/// let a = AaImage::new(&pixels); // or AaImage::new(&raw)
+/// # let _ = a;
+/// ```
+#[cfg(feature = "embedded-graphics")]
+#[derive(Debug, Clone, Copy)]
+pub struct Pixels<'a, T>(pub &'a T);
+
+#[cfg(feature = "embedded-graphics")]
+mod eg {
+    use embedded_graphics::image::{GetPixel, ImageRaw};
+    use embedded_graphics_core::geometry::{OriginDimensions, Point};
+    use embedded_graphics_core::pixelcolor::raw::ByteOrder;
+    use embedded_graphics_core::pixelcolor::PixelColor;
+
+    use super::*;
+    use crate::color::IntoLinear;
+
+    impl<T> Fetch for Pixels<'_, T>
+    where
+        T: GetPixel,
+        T::Color: IntoLinear<3>,
+    {
+        const OPAQUE: bool = true;
+        const MASK: bool = false;
+        const GRAY: bool = false;
+        #[inline]
+        fn texel(&self, x: i32, y: i32) -> Lin {
+            match self.0.pixel(Point::new(x, y)) {
+                Some(c) => Lin {
+                    c: c.into_linear().map(u32::from),
+                    a: super::super::format::ALPHA_ONE,
+                },
+                None => Lin { c: [0; 3], a: 0 },
+            }
+        }
+    }
+
+    /// An embedded-graphics image held by value (a copy of an `ImageRaw`).
+    #[derive(Debug, Clone, Copy)]
+    pub struct Owned<T>(pub T);
+
+    impl<T> Fetch for Owned<T>
+    where
+        T: GetPixel,
+        T::Color: IntoLinear<3>,
+    {
+        const OPAQUE: bool = true;
+        const MASK: bool = false;
+        const GRAY: bool = false;
+        #[inline]
+        fn texel(&self, x: i32, y: i32) -> Lin {
+            Pixels(&self.0).texel(x, y)
+        }
+    }
+
+    /// The size of an e-g image, clamped to what softedge draws (a larger
+    /// one is refused).
+    fn eg_size<T: OriginDimensions>(t: &T) -> (u16, u16) {
+        let s = t.size();
+        let c = |v: u32| u16::try_from(v).unwrap_or(u16::MAX);
+        (c(s.width), c(s.height))
+    }
+
+    impl<'a, T> Source for Pixels<'a, T>
+    where
+        T: GetPixel + OriginDimensions,
+        T::Color: IntoLinear<3>,
+    {
+        type Fetch<'f> = Pixels<'a, T>;
+        fn size(&self) -> (u16, u16) {
+            eg_size(self.0)
+        }
+        fn with_rows<R>(
+            &self,
+            _rows: Range<i32>,
+            f: impl FnOnce(&Self::Fetch<'_>) -> R,
+        ) -> Result<R, ImageFault> {
+            let (w, h) = self.size();
+            check_size(w, h)?;
+            Ok(f(self))
+        }
+    }
+
+    impl<'a, C, BO> Source for ImageRaw<'a, C, BO>
+    where
+        C: PixelColor + From<<C as PixelColor>::Raw> + IntoLinear<3> + Copy,
+        BO: ByteOrder + Copy,
+        ImageRaw<'a, C, BO>: GetPixel<Color = C> + OriginDimensions,
+    {
+        type Fetch<'f> = Owned<ImageRaw<'a, C, BO>>;
+        fn size(&self) -> (u16, u16) {
+            eg_size(self)
+        }
+        fn with_rows<R>(
+            &self,
+            _rows: Range<i32>,
+            f: impl FnOnce(&Self::Fetch<'_>) -> R,
+        ) -> Result<R, ImageFault> {
+            let (w, h) = eg_size(self);
+            check_size(w, h)?;
+            Ok(f(&Owned(*self)))
+        }
+    }
+}
