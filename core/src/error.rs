@@ -49,6 +49,10 @@ pub enum DrawError {
     /// A [`TriangleList`](crate::canvas::TriangleList) has no room for
     /// another triangle.
     ListFull,
+    /// A text has a character its font lacks (the first one; the
+    /// characters the font has were drawn, this one and any other missing
+    /// one were not).
+    MissingGlyph(char),
 }
 
 impl From<CoordError> for DrawError {
@@ -77,6 +81,9 @@ impl Display for DrawError {
                 p.x, p.y
             ),
             Self::ListFull => f.write_str("triangle list is full"),
+            Self::MissingGlyph(c) => {
+                write!(f, "the font has no glyph for {c:?} (U+{:04X})", *c as u32)
+            }
             Self::BadIndex => f.write_str("a mesh triangle names a point the mesh does not have"),
             Self::Stroke(e) => e.fmt(f),
         }

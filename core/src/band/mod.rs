@@ -56,6 +56,7 @@
 mod depth;
 mod errors;
 mod gradient;
+mod mask;
 mod pixels;
 mod sweep;
 mod zsweep;

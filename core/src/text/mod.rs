@@ -69,22 +69,41 @@
 //! outline): never a panic.
 
 pub mod bundled;
+pub mod cache;
+pub mod code;
+#[cfg(feature = "embedded-graphics")]
+pub mod eg;
 pub mod font;
 pub mod layout;
+pub(crate) mod masked;
 pub mod one_bit;
 pub mod outline;
+pub mod raster;
+pub mod raster_text;
+pub mod rasterize;
 pub mod run;
+mod sans12;
+mod sans16;
 pub mod scale;
 pub mod sharpen;
+pub mod source;
 #[allow(clippy::module_inception)]
 pub mod text;
 
+pub use cache::{CacheSlot, CacheStats, CachedFont, GlyphCache, PROBES};
+pub use code::{GlyphMask, MaskDecoder, MaskEncoder, LEVEL_MAX};
+#[cfg(feature = "embedded-graphics")]
+pub use eg::{AaTextStyle, DrawAaText};
 pub use font::{Font, FontError, MAX_KERN_LOOKUPS};
 pub use layout::{Alignment, Baseline, LineHeight, TextStyle};
 pub use one_bit::{ContrastBoost, MAX_CONTRAST_SHIFT};
 pub use outline::Glyph;
+pub use raster::{CharRange, MaskOffsets, RasterFont, RasterGlyph, RasterMetrics};
+pub use raster_text::RasterText;
+pub use rasterize::{rasterize_glyph, MaskBox, RasterizeError};
 pub use run::GlyphRun;
 pub use scale::{Scale, TextSize};
 pub use sharpen::Sharpen;
+pub use source::{GlyphSource, LineMetrics, OutlineGlyph};
 pub use text::{FontStyle, Text, TextMetrics};
 pub use ttf_parser::GlyphId;
