@@ -111,10 +111,10 @@ impl Report {
         );
         let _ = writeln!(
             s,
-            "as a GlyphCache at one phase: {} code bytes, {} slots ({} bytes), a scratch of {} x 32 cells ({} bytes)",
+            "as a GlyphCache at one phase: {} code bytes, {} slots ({} bytes, twice as many advised), a scratch of {} x 32 cells ({} bytes)",
             self.cache_code_bytes,
             self.glyphs,
-            self.glyphs * softedge::text::CacheSlot::SIZE,
+            self.glyphs * softedge::text::SLOT_WORDS * 4,
             self.max_box.0,
             usize::from(self.max_box.0) * 32 * 4,
         );

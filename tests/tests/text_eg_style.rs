@@ -13,7 +13,7 @@ use embedded_graphics::text::renderer::TextRenderer;
 use embedded_graphics::text::{Alignment, Baseline, LineHeight, Text, TextStyleBuilder};
 use softedge::prelude::*;
 use softedge::text::bundled::SANS_16;
-use softedge::text::{AaTextStyle, CacheSlot, CachedFont, Font, GlyphCache, TextSize};
+use softedge::text::{AaTextStyle, CachedFont, Font, GlyphCache, TextSize, SLOT_WORDS};
 use softedge::{Band, BandBuffer};
 
 /// One screen's text, written for embedded-graphics' `MonoTextStyle`: the
@@ -86,7 +86,7 @@ fn monotextstyle_code_compiles_and_draws_with_only_the_style_changed() {
         screen_of(|canvas| Ok(screen!(AaTextStyle::new(&SANS_16, Rgb565::WHITE), canvas)));
     // An outline font through a glyph cache.
     let font = Font::bundled().unwrap();
-    let (mut codes, mut slots, mut scratch) = ([0u8; 4096], [CacheSlot::EMPTY; 64], [0i32; 1024]);
+    let (mut codes, mut slots, mut scratch) = ([0u8; 4096], [0u32; 64 * SLOT_WORDS], [0i32; 1024]);
     let cache = GlyphCache::new(&mut codes, &mut slots, &mut scratch);
     let sans = CachedFont::new(&font, TextSize::px(16), &cache).with_phases(1);
     let (cached, cached_next) =

@@ -20,8 +20,8 @@ use softedge::geom::FinePoint;
 use softedge::path::Tolerance;
 use softedge::style::Opacity;
 use softedge::text::{
-    rasterize_glyph, CacheSlot, CharRange, Font, FontStyle, GlyphCache, LineMetrics, MaskOffsets,
-    RasterFont, RasterGlyph, RasterMetrics, RasterText, Scale, Text, TextSize,
+    rasterize_glyph, CharRange, Font, FontStyle, GlyphCache, LineMetrics, MaskOffsets, RasterFont,
+    RasterGlyph, RasterMetrics, RasterText, Scale, Text, TextSize, SLOT_WORDS,
 };
 use softedge::{Band, BandBuffer, DrawError};
 use softedge_tests::glyph_ref::{string_outline, RefOutline};
@@ -283,7 +283,7 @@ fn every_cached_glyph_is_within_a_32nd_of_exact_at_its_drawn_position() {
     for size in [8u16, 12, 16, 24] {
         let (mut codes, mut slots, mut scratch) = (
             vec![0u8; 1 << 16],
-            vec![CacheSlot::EMPTY; 512],
+            vec![0u32; 512 * SLOT_WORDS],
             vec![0i32; 1 << 14],
         );
         let cache = GlyphCache::new(&mut codes, &mut slots, &mut scratch);
@@ -364,7 +364,7 @@ fn a_text_drawn_in_bands_of_any_height_is_the_text_drawn_whole() {
     let rf = built.font();
     let (mut codes, mut slots, mut scratch) = (
         vec![0u8; 8192],
-        vec![CacheSlot::EMPTY; 128],
+        vec![0u32; 128 * SLOT_WORDS],
         vec![0i32; 4096],
     );
     let cache = GlyphCache::new(&mut codes, &mut slots, &mut scratch);
@@ -436,7 +436,7 @@ fn missing_characters_are_reported_and_not_drawn() {
     // The outline font, drawn directly and through a cache.
     let (mut codes, mut slots, mut scratch) = (
         vec![0u8; 4096],
-        vec![CacheSlot::EMPTY; 64],
+        vec![0u32; 64 * SLOT_WORDS],
         vec![0i32; 2048],
     );
     let cache = GlyphCache::new(&mut codes, &mut slots, &mut scratch);

@@ -2,10 +2,13 @@
 //! band's cover scratch.
 //!
 //! Takes one row of coverage values (coverage units, `0..=`
-//! [`COVER_ONE`](crate::COVER_ONE) a pixel) starting at a frame pixel;
-//! gives the scratch the changes of running coverage that sum to them: the
-//! first pixel's value at its column, each next pixel's difference from
-//! the one before, and the last pixel's value taken back right of it. The
+//! [`COVER_ONE`](crate::COVER_ONE) a pixel) starting at a frame pixel, as
+//! runs of one value (a glyph mask's code is runs: of empty and of whole
+//! pixels, and single pixels); gives the scratch the changes of running
+//! coverage that sum to them: the first pixel's value at its column, each
+//! next value's difference from the one before, and the last value taken
+//! back right of the row. The row's extent of changes covers the changes
+//! written (no more), so the sweep visits only those columns. The
 //! sweep ([`compose`](super::BandBuffer::compose)) then sums them along
 //! the row as it sums an outline's edges, so a mask is composed like any
 //! shape (every paint, opacity and blend, in linear light), and masks and
@@ -24,53 +27,137 @@ use super::{row_start, BandBuffer, ROW_HEAD};
 
 impl<const C: usize> BandBuffer<'_, C> {
     /// Adds the coverage `covers` of frame pixels `x, x + 1, ...` of frame
-    /// row `y` to the cover scratch, as changes (see [the module](self)).
-    /// Rows outside the band are dropped. Per pixel a subtraction and an
-    /// addition to the scratch (none where the value repeats).
-    #[inline(never)] // one out-of-line loop per row; profiles name it
+    /// row `y` to the cover scratch, as changes (one pixel a run).
+    #[cfg(test)]
     pub(crate) fn add_mask_row(&mut self, x: i32, y: i32, covers: &[i32]) {
+        let mut k = 0usize;
+        let n = covers.len().min(u32::MAX as usize) as u32;
+        self.add_mask(x, y, n, 1, || {
+            let v = covers.get(k).copied().unwrap_or(0);
+            k += 1;
+            (v, 1)
+        });
+    }
+
+    /// The changes of frame row `y` for a mask row of `width` pixels from
+    /// frame column `x`, when all of it and the column right of it lie
+    /// inside the band: the `width + 1` change cells from the mask's first
+    /// column on (empty changes, or what other shapes' edges put there:
+    /// add to them). The row's extent of changes is widened to those
+    /// columns. `None` for a row outside the band or a mask row not wholly
+    /// inside its columns: write that one with [`add_mask`](Self::add_mask).
+    #[inline]
+    pub(crate) fn mask_row(&mut self, x: i32, y: i32, width: u32) -> Option<&mut [i32]> {
         let w = i32::from(self.band.width);
         let r = y.wrapping_sub(self.band.y0);
-        if r < 0 || r >= i32::from(self.band.rows) {
-            return;
+        let c = x.wrapping_sub(self.band.x0);
+        if r < 0 || r >= i32::from(self.band.rows) || c < 0 || width >= (w - c) as u32 {
+            return None;
         }
-        // The band columns of the row's pixels, and the pixels in the band.
-        let c = x.saturating_sub(self.band.x0);
-        let n = covers.len().min(i32::MAX as usize) as i32;
-        let (first, end) = (c.max(0), c.saturating_add(n).min(w));
-        if first >= end {
-            return;
-        }
-        let Some(shown) = covers.get((first - c) as usize..(end - c) as usize) else {
-            return;
+        let (r, c, n, w) = (r as usize, c as usize, width as usize, w as usize);
+        let start = row_start(r, w);
+        let [lo, hi, _, _, deltas @ ..] = self.cover.get_mut(start..start + w + ROW_HEAD)? else {
+            return None;
         };
-        let w = w as usize;
-        let start = row_start(r as usize, w);
-        let Some([lo, hi, _, _, deltas @ ..]) = self.cover.get_mut(start..start + w + ROW_HEAD)
-        else {
-            return;
-        };
-        let (first, end) = (first as usize, end as usize);
-        let mut prev = 0i32;
-        if let Some(cells) = deltas.get_mut(first..end) {
-            for (d, &v) in cells.iter_mut().zip(shown) {
+        *lo = (*lo).min(c as i32);
+        *hi = (*hi).max((c + n) as i32);
+        deltas.get_mut(c..c + n + 1)
+    }
+
+    /// Adds a mask of `height` rows of `width` pixels, its first at frame
+    /// pixel `(x, y)`, given as runs of one value that go on across row
+    /// ends: `next()` gives the next run (its coverage, and its length,
+    /// at least one pixel), and is not called past the mask's last pixel
+    /// in the band. Each run is one change where its value differs from
+    /// the one before it in its row (so a run of empty or whole pixels
+    /// costs one call); each row's last value is taken back after it.
+    /// Rows above the band are passed over, rows below it not asked for.
+    #[inline(never)] // one loop per glyph; profiles name it
+    pub(crate) fn add_mask(
+        &mut self,
+        x: i32,
+        y: i32,
+        width: u32,
+        height: u32,
+        mut next: impl FnMut() -> (i32, u32),
+    ) {
+        let w = i32::from(self.band.width);
+        let c0 = x.saturating_sub(self.band.x0);
+        let r0 = y.saturating_sub(self.band.y0);
+        let rows = i32::from(self.band.rows);
+        // The run being written: its value and the pixels of it left.
+        let (mut v, mut n) = (0i32, 0u32);
+        for j in 0..height.min(i32::MAX as u32) as i32 {
+            let r = r0.saturating_add(j);
+            if r >= rows || width == 0 {
+                return;
+            }
+            let mut left = width;
+            if r < 0 {
+                // Above the band: passed over.
+                loop {
+                    if n == 0 {
+                        (v, n) = next();
+                        n = n.max(1);
+                    }
+                    if n >= left {
+                        n -= left;
+                        break;
+                    }
+                    left -= n;
+                    n = 0;
+                }
+                continue;
+            }
+            let start = row_start(r as usize, w as usize);
+            let Some([lo, hi, _, _, deltas @ ..]) =
+                self.cover.get_mut(start..start + w as usize + ROW_HEAD)
+            else {
+                return;
+            };
+            // Band column of the next pixel: a change left of the band
+            // goes to its first column (the pixels there are not shown:
+            // the first one shown gets the sum of the changes up to it,
+            // its own value), one right of it is dropped.
+            let mut c = c0;
+            let (mut first, mut last) = (i32::MAX, i32::MIN);
+            let mut prev = 0i32;
+            loop {
+                if n == 0 {
+                    (v, n) = next();
+                    n = n.max(1);
+                }
                 if v != prev {
-                    *d = d.wrapping_add(v.wrapping_sub(prev));
+                    let k = c.max(0);
+                    if let Some(d) = deltas.get_mut(k as usize) {
+                        *d = d.wrapping_add(v.wrapping_sub(prev));
+                        first = first.min(k);
+                        last = k;
+                    }
                     prev = v;
                 }
+                if n >= left {
+                    n -= left;
+                    c = c.saturating_add(left as i32);
+                    break;
+                }
+                c = c.saturating_add(n as i32);
+                left -= n;
+                n = 0;
+            }
+            if prev != 0 {
+                let k = c.max(0);
+                if let Some(d) = deltas.get_mut(k as usize) {
+                    *d = d.wrapping_sub(prev);
+                    first = first.min(k);
+                    last = k;
+                }
+            }
+            if first <= last {
+                *lo = (*lo).min(first);
+                *hi = (*hi).max(last.min(w - 1));
             }
         }
-        // The last value taken back right of the last pixel (dropped at
-        // the band's end, where the sweep stops anyway).
-        let mut last = end - 1;
-        if prev != 0 {
-            if let Some(d) = deltas.get_mut(end) {
-                *d = d.wrapping_sub(prev);
-                last = end;
-            }
-        }
-        *lo = (*lo).min(first as i32);
-        *hi = (*hi).max(last as i32);
     }
 }
 
@@ -87,14 +174,21 @@ mod tests {
     /// channel), and gives each pixel's accumulator over 4095: its
     /// coverage in coverage units.
     fn composed(band: Band, rows: &[(i32, i32, Vec<i32>)]) -> Vec<i32> {
+        composed_with(band, |buf| {
+            for (x, y, covers) in rows {
+                buf.add_mask_row(*x, *y, covers);
+            }
+        })
+    }
+
+    /// What `write` puts in the scratch, composed (see `composed`).
+    fn composed_with(band: Band, write: impl FnOnce(&mut BandBuffer<'_, 1>)) -> Vec<i32> {
         let (w, h) = (band.width, band.rows);
         let mut acc = std::vec![0i32; BandBuffer::<1>::acc_len(w, h)];
         let mut cover = std::vec![0i32; BandBuffer::<1>::cover_len(w, h)];
         let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
         buf.clear([0]);
-        for (x, y, covers) in rows {
-            buf.add_mask_row(*x, *y, covers);
-        }
+        write(&mut buf);
         buf.compose(
             band.y0,
             band.y0 + i32::from(h),
@@ -165,6 +259,45 @@ mod tests {
                 reference(band, &rows),
                 "case {case}: {band:?} {rows:?}"
             );
+        }
+    }
+
+    #[test]
+    fn a_mask_given_as_runs_across_rows_is_its_rows() {
+        let mut rng = crate::path::testing::Lcg(0x0033_a5c5);
+        for case in 0..400 {
+            let band = Band {
+                width: 1 + rng.below(10) as u16,
+                y0: rng.below(4) as i32,
+                rows: 1 + rng.below(4) as u16,
+                x0: if case % 2 == 0 { 0 } else { 5 },
+            };
+            let (w, h) = (rng.below(7) as usize, 1 + rng.below(6) as usize);
+            let px: Vec<i32> = (0..w * h)
+                .map(|_| match rng.below(3) {
+                    0 => 0,
+                    1 => COVER_ONE,
+                    _ => rng.below(COVER_ONE as u64 + 1) as i32,
+                })
+                .collect();
+            let (x, y) = (band.x0 + rng.below(16) as i32 - 5, rng.below(9) as i32);
+            let rows: Vec<(i32, i32, Vec<i32>)> = (0..h)
+                .map(|j| (x, y + j as i32, px[j * w..(j + 1) * w].to_vec()))
+                .collect();
+            let want = composed(band, &rows);
+            // The same pixels as runs of equal values, across row ends.
+            let mut runs: Vec<(i32, u32)> = Vec::new();
+            for &v in &px {
+                match runs.last_mut() {
+                    Some((u, n)) if *u == v && rng.below(3) != 0 => *n += 1,
+                    _ => runs.push((v, 1)),
+                }
+            }
+            let got = composed_with(band, |buf| {
+                let mut it = runs.iter().copied();
+                buf.add_mask(x, y, w as u32, h as u32, || it.next().unwrap_or((0, 1)));
+            });
+            assert_eq!(got, want, "case {case}: {band:?} at ({x}, {y}), {w} x {h}");
         }
     }
 

@@ -56,6 +56,8 @@
 mod depth;
 mod errors;
 mod gradient;
+// Used by text's glyph masks only.
+#[cfg(feature = "text")]
 mod mask;
 mod pixels;
 mod sweep;

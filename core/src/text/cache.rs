@@ -3,8 +3,9 @@
 //! through one.
 //!
 //! Takes an outline [`Font`], a size (a [`Scale`]), and three slices of
-//! the caller's: bytes for the glyphs' codes, [`CacheSlot`]s (one a glyph
-//! kept) and `i32` cells the rasterizer walks edges into. Gives the
+//! the caller's: bytes for the glyphs' codes, `u32` words for the glyphs'
+//! slots ([`SLOT_WORDS`] a glyph kept) and `i32` cells the rasterizer
+//! walks edges into. Gives the
 //! glyphs as masks ([`GlyphSource`]): a glyph met for the first time is
 //! rasterized ([`rasterize_glyph`](super::rasterize_glyph)) and kept;
 //! every later band and frame decodes it. So text in a font or size not
@@ -16,17 +17,24 @@
 //! - codes: what the glyphs need (the 5-bit code: about 48 bytes a glyph
 //!   of DejaVu Sans at 16 px, 4.7 bits a pixel of its box, plus at most a
 //!   byte); a label's distinct glyphs times that, times the phases used;
-//! - slots: [`CacheSlot::SIZE`] bytes each, one a glyph and phase kept
-//!   (a power of two of them is used, at least [`PROBES`]; a glyph is
-//!   kept in one of the `PROBES` slots from its home slot, so give twice
-//!   as many slots as glyphs in use, or more);
+//! - slots: [`SLOT_WORDS`] words (24 bytes) each, one a glyph and phase
+//!   kept (a power of two of them is used, at least [`PROBES`]; a glyph
+//!   is kept in one of the `PROBES` slots from its home slot, so give
+//!   twice as many slots as glyphs in use, or more);
 //! - scratch: `4 (width + 3)` bytes a row of the widest glyph's box; a
 //!   scratch of fewer rows than the glyph is tall is walked again per
 //!   strip (two passes), a scratch of less than one row cannot rasterize
 //!   it.
 //!
-//! `softedge-sim font --cache` prints the figures for a font, size and
-//! text. A glyph the cache cannot keep (wider than the scratch, longer
+//! - the [`GlyphCache`] itself: 1.4 KB (on 32-bit targets) of memos:
+//!   [`MEMO`] characters' glyphs and advances and as many kerning pairs
+//!   (in sets of [`MEMO_WAYS`]), so
+//!   that laying a line out does not read the font's `cmap`, `hmtx` and
+//!   GPOS tables again in every band (those reads cost more than drawing
+//!   the glyphs), and the line metrics.
+//!
+//! `softedge-sim font` prints the code bytes and box widths of a font's
+//! glyphs (what a cache of the same glyphs holds). A glyph the cache cannot keep (wider than the scratch, longer
 //! than the code bytes) is drawn from its outline directly, in the same
 //! shape: it costs its walk in every band, but is drawn.
 //!
@@ -53,41 +61,28 @@ use crate::path::Tolerance;
 
 /// Slots a glyph may be kept in: the ones from its home slot on.
 pub const PROBES: usize = 8;
+/// Words of a slot: its key, its last use, where its code is and how
+/// long, its box (two words).
+pub const SLOT_WORDS: usize = 6;
+/// Entries of each memo (characters, kerning pairs), in sets of
+/// [`MEMO_WAYS`].
+pub const MEMO: usize = 64;
+/// Entries of a memo's set: a key is looked for in the four of its set.
+pub const MEMO_WAYS: usize = 4;
 
-/// One glyph kept: which (glyph, phase), where its code is, its box, when
-/// it was last used.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct CacheSlot {
-    key: u32,
-    offset: u32,
-    len: u32,
-    mask: MaskBox,
-    used: u32,
-}
+/// Word offsets in a slot.
+const KEY: usize = 0;
+const USED: usize = 1;
+const OFFSET: usize = 2;
+const LEN: usize = 3;
+const LEFT_TOP: usize = 4;
+const WIDTH_HEIGHT: usize = 5;
 
-impl CacheSlot {
-    /// An empty slot.
-    pub const EMPTY: CacheSlot = CacheSlot {
-        key: EMPTY_KEY,
-        offset: 0,
-        len: 0,
-        mask: MaskBox {
-            left: 0,
-            top: 0,
-            width: 0,
-            height: 0,
-        },
-        used: 0,
-    };
-
-    /// Bytes of a slot.
-    pub const SIZE: usize = core::mem::size_of::<CacheSlot>();
-}
-
-/// The key of no glyph.
+/// The key of no glyph (and of no memo entry).
 const EMPTY_KEY: u32 = u32::MAX;
 
-/// What a cache holds glyphs of: a font's data, scale, tolerance, phases.
+/// What a cache holds glyphs of: a font's data, scale, tolerance, phases,
+/// kerning.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 struct FaceKey {
     data: usize,
@@ -96,6 +91,7 @@ struct FaceKey {
     scale: Scale,
     tol: Tolerance,
     phases: u8,
+    kerning: bool,
 }
 
 /// Hits, misses and glyphs drawn from their outline, since the cache was
@@ -115,9 +111,9 @@ pub struct CacheStats {
 /// Rasterized glyphs over the caller's slices (see [the module](self)).
 ///
 /// ```
-/// use softedge::text::{CacheSlot, GlyphCache};
+/// use softedge::text::{GlyphCache, SLOT_WORDS};
 /// let mut codes = [0u8; 4096];
-/// let mut slots = [CacheSlot::EMPTY; 64];
+/// let mut slots = [0u32; 64 * SLOT_WORDS]; // 64 glyphs kept at most
 /// let mut scratch = [0i32; 32 * 32];
 /// let cache = GlyphCache::new(&mut codes, &mut slots, &mut scratch);
 /// assert_eq!(cache.stats().misses, 0);
@@ -125,31 +121,49 @@ pub struct CacheStats {
 #[derive(Debug)]
 pub struct GlyphCache<'s> {
     codes: &'s [Cell<u8>],
-    slots: &'s [Cell<CacheSlot>],
+    slots: &'s [Cell<u32>],
     scratch: &'s [Cell<i32>],
     face: Cell<Option<FaceKey>>,
+    metrics: Cell<Option<LineMetrics>>,
+    /// Characters: `(char + 1, glyph or EMPTY_KEY when missing, advance)`,
+    /// key 0 for none.
+    chars: [Cell<(u32, u32, i32)>; MEMO],
+    /// Kerning pairs: `(left << 16 | right, value)`.
+    kerns: [Cell<(u32, i32)>; MEMO],
+    /// The next way of a set to replace, per set of each memo (round
+    /// robin).
+    turn: Cell<u32>,
+    /// The glyph and advance of the last character looked up.
+    last: Cell<(u32, i32)>,
     /// The next byte of the ring to write.
     head: Cell<usize>,
-    /// Counts uses (the slots' `used` stamps).
+    /// Counts uses (the slots' last-use stamps).
     clock: Cell<u32>,
     stats: Cell<CacheStats>,
 }
 
 impl<'s> GlyphCache<'s> {
-    /// A cache over `codes` (the glyphs' codes), `slots` (one a glyph
-    /// kept; the largest power of two of them, at least [`PROBES`], is
-    /// used) and `scratch` (the rasterizer's cells).
-    pub fn new(codes: &'s mut [u8], slots: &'s mut [CacheSlot], scratch: &'s mut [i32]) -> Self {
-        slots.fill(CacheSlot::EMPTY);
-        Self {
+    /// A cache over `codes` (the glyphs' codes), `slots` ([`SLOT_WORDS`]
+    /// words a glyph kept; the largest power of two of slots that fits,
+    /// at least [`PROBES`], is used) and `scratch` (the rasterizer's
+    /// cells).
+    pub fn new(codes: &'s mut [u8], slots: &'s mut [u32], scratch: &'s mut [i32]) -> Self {
+        let cache = Self {
             codes: Cell::from_mut(codes).as_slice_of_cells(),
             slots: Cell::from_mut(slots).as_slice_of_cells(),
             scratch: Cell::from_mut(scratch).as_slice_of_cells(),
             face: Cell::new(None),
+            metrics: Cell::new(None),
+            chars: [const { Cell::new((0, 0, 0)) }; MEMO],
+            kerns: [const { Cell::new((EMPTY_KEY, 0)) }; MEMO],
+            last: Cell::new((EMPTY_KEY, 0)),
+            turn: Cell::new(0),
             head: Cell::new(0),
             clock: Cell::new(0),
             stats: Cell::new(CacheStats::default()),
-        }
+        };
+        cache.clear();
+        cache
     }
 
     /// The counts so far.
@@ -162,53 +176,65 @@ impl<'s> GlyphCache<'s> {
         self.stats.replace(CacheStats::default())
     }
 
-    /// Forgets every glyph.
+    /// Forgets every glyph (and the memos).
     pub fn clear(&self) {
-        for s in self.slots {
-            s.set(CacheSlot::EMPTY);
+        for (i, w) in self.slots.iter().enumerate() {
+            w.set(if i % SLOT_WORDS == KEY { EMPTY_KEY } else { 0 });
         }
+        for c in &self.chars {
+            c.set((0, 0, 0));
+        }
+        for k in &self.kerns {
+            k.set((EMPTY_KEY, 0));
+        }
+        self.last.set((EMPTY_KEY, 0));
+        self.metrics.set(None);
         self.head.set(0);
         self.face.set(None);
     }
 
+    /// The slots: each [`SLOT_WORDS`] words.
+    fn slot_list(&self) -> impl Iterator<Item = &[Cell<u32>]> + '_ {
+        self.slots.chunks_exact(SLOT_WORDS)
+    }
+
     /// Code bytes in use by the glyphs kept.
     pub fn used_bytes(&self) -> usize {
-        self.slots
-            .iter()
-            .map(Cell::get)
-            .filter(|s| s.key != EMPTY_KEY)
-            .map(|s| s.len as usize)
+        self.slot_list()
+            .filter(|s| word(s, KEY) != EMPTY_KEY)
+            .map(|s| word(s, LEN) as usize)
             .sum()
     }
 
     /// Glyphs kept.
     pub fn glyphs(&self) -> usize {
-        self.slots
-            .iter()
-            .filter(|s| s.get().key != EMPTY_KEY)
+        self.slot_list()
+            .filter(|s| word(s, KEY) != EMPTY_KEY)
             .count()
     }
 
     /// The slots looked at for a key: [`PROBES`] from its home slot (its
     /// hash onto the largest power of two of slots that fits), wrapping
-    /// round that table; empty when there are fewer than `PROBES` slots.
+    /// round that table; none when there are fewer than `PROBES` slots.
     #[inline]
-    fn window(&self, key: u32) -> impl Iterator<Item = &Cell<CacheSlot>> + '_ {
-        let n = self.slots.len();
+    fn window(&self, key: u32) -> impl Iterator<Item = &[Cell<u32>]> + '_ {
+        let n = self.slots.len() / SLOT_WORDS;
         let bits = if n < PROBES {
             0
         } else {
             usize::BITS - 1 - n.leading_zeros()
         };
-        let table = if bits == 0 { 0 } else { 1usize << bits };
+        let mask = (1usize << bits).wrapping_sub(1);
         // Fibonacci hashing: the key times 2^32 / φ, its top bits.
         let home = if bits == 0 {
             0
         } else {
             (key.wrapping_mul(0x9e37_79b9) >> (32 - bits)) as usize
         };
-        (0..if table == 0 { 0 } else { PROBES })
-            .filter_map(move |k| self.slots.get((home + k) & (table.wrapping_sub(1))))
+        (0..if bits == 0 { 0 } else { PROBES }).filter_map(move |k| {
+            let at = ((home + k) & mask) * SLOT_WORDS;
+            self.slots.get(at..at + SLOT_WORDS)
+        })
     }
 
     fn count(&self, f: impl FnOnce(&mut CacheStats)) {
@@ -219,18 +245,12 @@ impl<'s> GlyphCache<'s> {
 
     /// The slot of `key`, if kept (its use stamped).
     #[inline]
-    fn find(&self, key: u32) -> Option<CacheSlot> {
+    fn find(&self, key: u32) -> Option<&[Cell<u32>]> {
         let clock = self.clock.get().wrapping_add(1);
         self.clock.set(clock);
-        for w in self.window(key) {
-            let mut s = w.get();
-            if s.key == key {
-                s.used = clock;
-                w.set(s);
-                return Some(s);
-            }
-        }
-        None
+        let s = self.window(key).find(|s| word(s, KEY) == key)?;
+        set(s, USED, clock);
+        Some(s)
     }
 
     /// Rasterizes glyph `id` at `phase_fine` into the ring and a slot of
@@ -240,7 +260,7 @@ impl<'s> GlyphCache<'s> {
         key: u32,
         o: &OutlineGlyph<'_>,
         phase_fine: i32,
-    ) -> Result<CacheSlot, RasterizeError> {
+    ) -> Result<&[Cell<u32>], RasterizeError> {
         // Written from the ring's head; at the end of the codes, the
         // glyph is written again from the start (a rare second walk).
         let mut start = self.head.get();
@@ -253,34 +273,32 @@ impl<'s> GlyphCache<'s> {
         self.head.set(start + len);
         // The glyphs whose bytes were taken are forgotten.
         let end = start + len;
-        for s in self.slots {
-            let v = s.get();
-            let (a, b) = (v.offset as usize, v.offset as usize + v.len as usize);
-            if v.key != EMPTY_KEY && a < end && start < b {
-                s.set(CacheSlot::EMPTY);
+        for s in self.slot_list() {
+            let a = word(s, OFFSET) as usize;
+            let b = a + word(s, LEN) as usize;
+            if word(s, KEY) != EMPTY_KEY && a < end && start < b {
+                set(s, KEY, EMPTY_KEY);
             }
         }
         // An empty slot of the key's window, or its least recently used.
+        let clock = self.clock.get();
         let victim = self
             .window(key)
-            .min_by_key(|w| {
-                let v = w.get();
-                if v.key == EMPTY_KEY {
+            .min_by_key(|s| {
+                if word(s, KEY) == EMPTY_KEY {
                     (0, 0)
                 } else {
-                    (1, u32::MAX - self.clock.get().wrapping_sub(v.used))
+                    (1, u32::MAX - clock.wrapping_sub(word(s, USED)))
                 }
             })
             .ok_or(RasterizeError::NoRoom)?;
-        let slot = CacheSlot {
-            key,
-            offset: start as u32,
-            len: len as u32,
-            mask,
-            used: self.clock.get(),
-        };
-        victim.set(slot);
-        Ok(slot)
+        set(victim, KEY, key);
+        set(victim, USED, clock);
+        set(victim, OFFSET, start as u32);
+        set(victim, LEN, len as u32);
+        set(victim, LEFT_TOP, pack(mask.left as u16, mask.top as u16));
+        set(victim, WIDTH_HEIGHT, pack(mask.width, mask.height));
+        Ok(victim)
     }
 
     /// Writes the code from byte `start` on: its box and length.
@@ -312,11 +330,52 @@ impl<'s> GlyphCache<'s> {
     }
 
     /// Binds the cache to `face`, forgetting what it held for another.
-    fn bind(&self, face: FaceKey) {
-        if self.face.get() != Some(face) {
+    #[inline]
+    fn bind(&self, face: &FaceKey) {
+        if self.face.get().as_ref() != Some(face) {
             self.clear();
-            self.face.set(Some(face));
+            self.face.set(Some(*face));
         }
+    }
+}
+
+/// Word `i` of a slot.
+#[inline]
+fn word(s: &[Cell<u32>], i: usize) -> u32 {
+    s.get(i).map_or(0, Cell::get)
+}
+
+/// Sets word `i` of a slot.
+#[inline]
+fn set(s: &[Cell<u32>], i: usize, v: u32) {
+    if let Some(w) = s.get(i) {
+        w.set(v);
+    }
+}
+
+/// Two halves in a word, `a` low.
+const fn pack(a: u16, b: u16) -> u32 {
+    a as u32 | (b as u32) << 16
+}
+
+/// The set of a memo's key: its [`MEMO_WAYS`] entries (the set from the
+/// top bits of the key's Fibonacci hash).
+#[inline]
+fn memo_set<T>(memo: &[T; MEMO], key: u32) -> &[T] {
+    const SETS: usize = MEMO / MEMO_WAYS;
+    let set = (key.wrapping_mul(0x9e37_79b9) >> (32 - SETS.trailing_zeros())) as usize;
+    memo.get(set * MEMO_WAYS..set * MEMO_WAYS + MEMO_WAYS)
+        .unwrap_or(&[])
+}
+
+impl GlyphCache<'_> {
+    /// The way of a set to replace next (the sets take turns on one
+    /// counter: close enough to round robin for a memo).
+    #[inline]
+    fn next_way(&self) -> usize {
+        let t = self.turn.get().wrapping_add(1);
+        self.turn.set(t);
+        t as usize % MEMO_WAYS
     }
 }
 
@@ -326,9 +385,9 @@ impl<'s> GlyphCache<'s> {
 /// ([`FontStyle::with_cache`](super::FontStyle::with_cache)).
 ///
 /// ```
-/// use softedge::text::{CacheSlot, CachedFont, Font, GlyphCache, GlyphSource, TextSize};
+/// use softedge::text::{CachedFont, Font, GlyphCache, GlyphSource, TextSize, SLOT_WORDS};
 /// let font = Font::bundled().unwrap();
-/// let (mut codes, mut slots, mut scratch) = ([0u8; 2048], [CacheSlot::EMPTY; 32], [0i32; 512]);
+/// let (mut codes, mut slots, mut scratch) = ([0u8; 2048], [0u32; 32 * SLOT_WORDS], [0i32; 512]);
 /// let cache = GlyphCache::new(&mut codes, &mut slots, &mut scratch);
 /// let sans = CachedFont::new(&font, TextSize::px(16), &cache);
 /// let a = sans.glyph('a').unwrap();
@@ -339,10 +398,7 @@ impl<'s> GlyphCache<'s> {
 #[derive(Debug, Clone, Copy)]
 pub struct CachedFont<'f, 'c> {
     font: &'f Font<'f>,
-    scale: Scale,
-    tol: Tolerance,
-    phases: u8,
-    kerning: bool,
+    face: FaceKey,
     cache: &'c GlyphCache<'c>,
 }
 
@@ -356,12 +412,18 @@ impl<'f, 'c> CachedFont<'f, 'c> {
     /// With a scale of its own (a [`FontStyle`](super::FontStyle)'s, the
     /// x-height snapped).
     pub fn with_scale(font: &'f Font<'f>, scale: Scale, cache: &'c GlyphCache<'c>) -> Self {
+        let data = font.face().raw_face().data;
         Self {
             font,
-            scale,
-            tol: Tolerance::DEFAULT,
-            phases: 4,
-            kerning: true,
+            face: FaceKey {
+                data: data.as_ptr() as usize,
+                len: data.len(),
+                glyphs: font.face().number_of_glyphs(),
+                scale,
+                tol: Tolerance::DEFAULT,
+                phases: 4,
+                kerning: true,
+            },
             cache,
         }
     }
@@ -369,19 +431,19 @@ impl<'f, 'c> CachedFont<'f, 'c> {
     /// With `n` horizontal phases (`1..=16`: 1 places glyphs on whole
     /// pixels, so a glyph is kept once for every position).
     pub fn with_phases(mut self, n: u8) -> Self {
-        self.phases = n.clamp(1, 16);
+        self.face.phases = n.clamp(1, 16);
         self
     }
 
     /// With a flattening tolerance.
     pub fn with_tolerance(mut self, tol: Tolerance) -> Self {
-        self.tol = tol;
+        self.face.tol = tol;
         self
     }
 
     /// With or without kerning.
     pub fn with_kerning(mut self, on: bool) -> Self {
-        self.kerning = on;
+        self.face.kerning = on;
         self
     }
 
@@ -390,15 +452,15 @@ impl<'f, 'c> CachedFont<'f, 'c> {
         self.font
     }
 
-    fn face_key(&self) -> FaceKey {
-        let data = self.font.face().raw_face().data;
-        FaceKey {
-            data: data.as_ptr() as usize,
-            len: data.len(),
-            glyphs: self.font.face().number_of_glyphs(),
-            scale: self.scale,
-            tol: self.tol,
-            phases: self.phases,
+    /// The glyph and advance of `c`, from the font (`(EMPTY_KEY, 0)` when
+    /// it lacks it).
+    fn look_up(&self, c: char) -> (u32, i32) {
+        match self.font.face().glyph_index(c) {
+            Some(g) => {
+                let a = self.face.scale.x_units(i32::from(self.font.advance(g)));
+                (u32::from(g.0), a.clamp(-(1 << 30), 1 << 30) as i32)
+            }
+            None => (EMPTY_KEY, 0),
         }
     }
 }
@@ -407,45 +469,86 @@ impl GlyphSource for CachedFont<'_, '_> {
     type Code = [Cell<u8>];
 
     fn line_metrics(&self) -> LineMetrics {
+        let cache = self.cache;
+        cache.bind(&self.face);
+        if let Some(m) = cache.metrics.get() {
+            return m;
+        }
         let f = self.font;
-        let s = &self.scale;
+        let s = &self.face.scale;
         let fine = |v: i64| v.clamp(-(1 << 30), 1 << 30) as i32;
         let (_, y_min, _, y_max) = f.global_bbox();
         let row = |v: i64| (v.div_euclid(i64::from(FINE_ONE))) as i32;
-        LineMetrics {
+        let m = LineMetrics {
             ascender: fine(s.y_units(i32::from(f.ascender()))),
             descender: fine(s.y_units(i32::from(f.descender()))),
             line_height: fine(s.y_units(f.line_height())),
             // The font's box, a pixel more each way (as the rasterizer's).
             ink_top: row(-s.y_units(i32::from(y_max.max(y_min)))) - 1,
             ink_bottom: row(-s.y_units(i32::from(y_min.min(y_max)))) + 2,
-        }
+        };
+        cache.metrics.set(Some(m));
+        m
     }
 
     fn phases(&self) -> u8 {
-        self.phases
+        self.face.phases
     }
 
     #[inline]
     fn glyph(&self, c: char) -> Option<u16> {
-        self.font.face().glyph_index(c).map(|g| g.0)
+        let cache = self.cache;
+        cache.bind(&self.face);
+        let key = (c as u32).wrapping_add(1);
+        let set = memo_set(&cache.chars, key);
+        let (g, adv) = match set.iter().map(Cell::get).find(|m| m.0 == key) {
+            Some((_, g, adv)) => (g, adv),
+            None => {
+                let (g, adv) = self.look_up(c);
+                if let Some(m) = set.get(cache.next_way()) {
+                    m.set((key, g, adv));
+                }
+                (g, adv)
+            }
+        };
+        cache.last.set((g, adv));
+        u16::try_from(g).ok()
     }
 
     #[inline]
     fn advance(&self, g: u16) -> i32 {
-        let a = self.scale.x_units(i32::from(self.font.advance(GlyphId(g))));
+        let (last, adv) = self.cache.last.get();
+        if last == u32::from(g) {
+            return adv;
+        }
+        let a = self
+            .face
+            .scale
+            .x_units(i32::from(self.font.advance(GlyphId(g))));
         a.clamp(-(1 << 30), 1 << 30) as i32
     }
 
     #[inline]
     fn kerning(&self, left: u16, right: u16) -> i32 {
-        if !self.kerning {
+        if !self.face.kerning {
             return 0;
         }
+        let cache = self.cache;
+        cache.bind(&self.face);
+        let key = u32::from(left) << 16 | u32::from(right);
+        let set = memo_set(&cache.kerns, key);
+        if let Some((_, v)) = set.iter().map(Cell::get).find(|m| m.0 == key) {
+            return v;
+        }
         let k = self
+            .face
             .scale
             .x_units(self.font.kerning(GlyphId(left), GlyphId(right)));
-        k.clamp(-(1 << 30), 1 << 30) as i32
+        let k = k.clamp(-(1 << 30), 1 << 30) as i32;
+        if let Some(m) = set.get(cache.next_way()) {
+            m.set((key, k));
+        }
+        k
     }
 
     fn mask<R>(
@@ -455,8 +558,8 @@ impl GlyphSource for CachedFont<'_, '_> {
         f: impl FnOnce(&GlyphMask<'_, [Cell<u8>]>) -> R,
     ) -> Option<R> {
         let cache = self.cache;
-        cache.bind(self.face_key());
-        let phase = phase.min(self.phases - 1);
+        cache.bind(&self.face);
+        let phase = phase.min(self.face.phases - 1);
         let key = u32::from(g) << 8 | u32::from(phase);
         let slot = match cache.find(key) {
             Some(s) => {
@@ -465,7 +568,7 @@ impl GlyphSource for CachedFont<'_, '_> {
             }
             None => {
                 let o = self.outline(g)?;
-                let phase_fine = i32::from(phase) * FINE_ONE / i32::from(self.phases);
+                let phase_fine = i32::from(phase) * FINE_ONE / i32::from(self.face.phases);
                 match cache.insert(key, &o, phase_fine) {
                     Ok(s) => {
                         cache.count(|s| s.misses += 1);
@@ -478,18 +581,24 @@ impl GlyphSource for CachedFont<'_, '_> {
                 }
             }
         };
-        let (a, b) = (slot.offset as usize, (slot.offset + slot.len) as usize);
-        let code = cache.codes.get(a..b)?;
-        let m = slot.mask;
-        Some(f(&GlyphMask::new(m.left, m.top, m.width, m.height, code)))
+        let a = word(slot, OFFSET) as usize;
+        let code = cache.codes.get(a..a + word(slot, LEN) as usize)?;
+        let (lt, wh) = (word(slot, LEFT_TOP), word(slot, WIDTH_HEIGHT));
+        Some(f(&GlyphMask::new(
+            lt as u16 as i16,
+            (lt >> 16) as u16 as i16,
+            wh as u16,
+            (wh >> 16) as u16,
+            code,
+        )))
     }
 
     fn outline(&self, g: u16) -> Option<OutlineGlyph<'_>> {
         Some(OutlineGlyph {
             font: self.font,
             id: GlyphId(g),
-            scale: self.scale,
-            tolerance: self.tol,
+            scale: self.face.scale,
+            tolerance: self.face.tol,
         })
     }
 }

@@ -163,6 +163,139 @@ pub struct MaskDecoder<'a, B: ?Sized = [u8]> {
 }
 
 impl<B: CodeBytes + ?Sized> MaskDecoder<'_, B> {
+    /// The next run of pixels of one coverage (units of [`COVER_ONE`]): its
+    /// value and length, at most `max` (at least 1; `max` 0 is taken as
+    /// 1). A single-pixel symbol is a run of one; past the end of the
+    /// code, empty pixels.
+    #[inline]
+    pub fn run(&mut self, max: u32) -> (i32, u32) {
+        let max = max.max(1);
+        if self.run == 0 {
+            let (v, n) = self.next_run();
+            self.run_value = v;
+            self.run = n;
+        }
+        let n = self.run.min(max);
+        self.run -= n;
+        (self.run_value, n)
+    }
+
+    /// The next symbol's run, whole: its coverage and length (a pixel, or
+    /// 2..=9 of a run; past the end of the code, a long run of empty
+    /// pixels). Any run begun by [`run`](Self::run) or
+    /// [`fill`](Self::fill) and not finished is given first.
+    #[inline(always)]
+    pub fn next_run(&mut self) -> (i32, u32) {
+        if self.run > 0 {
+            let n = core::mem::take(&mut self.run);
+            return (self.run_value, n);
+        }
+        // At most 8 bits a symbol: one byte read when fewer are held.
+        if self.nbits < SYMBOL_BITS + RUN_BITS {
+            match self.code.byte(self.next) {
+                Some(b) => {
+                    self.bits |= u32::from(b) << self.nbits;
+                    self.nbits += 8;
+                    self.next += 1;
+                }
+                None if self.nbits < SYMBOL_BITS => return (0, u32::MAX),
+                None => {}
+            }
+        }
+        let s = self.bits & ((1 << SYMBOL_BITS) - 1);
+        if s < RUN_EMPTY {
+            self.bits >>= SYMBOL_BITS;
+            self.nbits -= SYMBOL_BITS;
+            return (LEVEL_COVER.get(s as usize).copied().unwrap_or(0), 1);
+        }
+        // A run (a damaged code that ends inside one reads 0 bits).
+        let len = ((self.bits >> SYMBOL_BITS) & ((1 << RUN_BITS) - 1)) + RUN_MIN;
+        let used = (SYMBOL_BITS + RUN_BITS).min(self.nbits);
+        self.bits >>= used;
+        self.nbits -= used;
+        (if s == RUN_FULL { COVER_ONE } else { 0 }, len)
+    }
+
+    /// Adds the next `cells.len() - 1` pixels, one row of a mask, to
+    /// `cells` as changes of running coverage: each pixel's difference
+    /// from the one before (the first's from 0), and the last one's value
+    /// taken back in the last cell (a band's scratch row, see
+    /// [`add_mask`](crate::band::BandBuffer)). Per pixel of a single-pixel
+    /// symbol: its bits, a table look-up, a subtraction and an addition.
+    #[inline]
+    pub(crate) fn add_row(&mut self, cells: &mut [i32]) {
+        let Some((close, row)) = cells.split_last_mut() else {
+            return;
+        };
+        let mut prev = 0i32;
+        let mut i = 0usize;
+        let n = row.len();
+        // A run begun in the row above goes on.
+        if self.run > 0 {
+            let k = (self.run as usize).min(n);
+            if let Some(d) = row.first_mut() {
+                *d = d.wrapping_add(self.run_value);
+            }
+            prev = self.run_value;
+            self.run -= k as u32;
+            i = k;
+        }
+        let (mut bits, mut nbits) = (self.bits, self.nbits);
+        while i < n {
+            if nbits < SYMBOL_BITS + RUN_BITS {
+                match self.code.byte(self.next) {
+                    Some(b) => {
+                        bits |= u32::from(b) << nbits;
+                        nbits += 8;
+                        self.next += 1;
+                    }
+                    None if nbits < SYMBOL_BITS => {
+                        // Past the end: empty pixels.
+                        if let Some(d) = row.get_mut(i) {
+                            *d = d.wrapping_sub(prev);
+                        }
+                        prev = 0;
+                        break;
+                    }
+                    None => {}
+                }
+            }
+            let s = bits & ((1 << SYMBOL_BITS) - 1);
+            let (v, len) = if s < RUN_EMPTY {
+                bits >>= SYMBOL_BITS;
+                nbits -= SYMBOL_BITS;
+                (LEVEL_COVER.get(s as usize).copied().unwrap_or(0), 1)
+            } else {
+                let len = ((bits >> SYMBOL_BITS) & ((1 << RUN_BITS) - 1)) + RUN_MIN;
+                let used = (SYMBOL_BITS + RUN_BITS).min(nbits);
+                bits >>= used;
+                nbits -= used;
+                (if s == RUN_FULL { COVER_ONE } else { 0 }, len as usize)
+            };
+            if let Some(d) = row.get_mut(i) {
+                *d = d.wrapping_add(v.wrapping_sub(prev));
+            }
+            prev = v;
+            i += len;
+            if i > n {
+                // The run goes on in the next row.
+                self.run = (i - n) as u32;
+                self.run_value = v;
+            }
+        }
+        (self.bits, self.nbits) = (bits, nbits);
+        *close = close.wrapping_sub(prev);
+    }
+
+    /// Passes over the next `n` pixels.
+    #[inline]
+    pub fn skip(&mut self, n: u32) {
+        let mut left = n;
+        while left > 0 {
+            left -= self.run(left).1;
+        }
+    }
+
     /// Fills `out` with the next `out.len()` pixels' coverage (units of
     /// [`COVER_ONE`]).
     #[inline]
@@ -381,6 +514,76 @@ mod tests {
                 .iter()
                 .zip(&levels)
                 .all(|(&g, &l)| g == LEVEL_COVER[usize::from(l)]));
+        }
+    }
+
+    #[test]
+    fn runs_and_skips_give_the_same_pixels_as_fill() {
+        let mut rng = crate::path::testing::Lcg(0x0033_5c1b);
+        for case in 0..1000 {
+            let levels: Vec<u8> = (0..rng.below(60))
+                .map(|_| match rng.below(4) {
+                    0 | 1 => 0,
+                    2 => LEVEL_MAX,
+                    _ => rng.below(u64::from(LEVEL_MAX) + 1) as u8,
+                })
+                .collect();
+            let code = encode(&levels);
+            let n = levels.len() + 5;
+            let mut want = std::vec![0i32; n];
+            GlyphMask::new(0, 0, n as u16, 1, &code[..])
+                .rows()
+                .fill(&mut want);
+            let mut dec = GlyphMask::new(0, 0, n as u16, 1, &code[..]).rows();
+            let mut got = Vec::new();
+            while got.len() < n {
+                let left = (n - got.len()) as u32;
+                if rng.below(4) == 0 {
+                    let k = 1 + rng.below(u64::from(left)) as u32;
+                    dec.skip(k);
+                    got.extend(want[got.len()..got.len() + k as usize].iter().copied());
+                } else {
+                    let (v, k) = dec.run(1 + rng.below(u64::from(left)) as u32);
+                    assert!(k >= 1 && k <= left, "case {case}");
+                    got.extend(core::iter::repeat_n(v, k as usize));
+                }
+            }
+            assert_eq!(got, want, "case {case}: {levels:?}");
+        }
+    }
+
+    #[test]
+    fn rows_added_as_changes_sum_to_the_pixels() {
+        let mut rng = crate::path::testing::Lcg(0x0033_a0d0);
+        for case in 0..1000 {
+            let (w, h) = (1 + rng.below(12) as usize, 1 + rng.below(6) as usize);
+            let levels: Vec<u8> = (0..w * h - rng.below(3).min(w as u64 * h as u64 - 1) as usize)
+                .map(|_| match rng.below(4) {
+                    0 | 1 => 0,
+                    2 => LEVEL_MAX,
+                    _ => rng.below(u64::from(LEVEL_MAX) + 1) as u8,
+                })
+                .collect();
+            let code = encode(&levels);
+            let mut want = std::vec![0i32; w * h];
+            GlyphMask::new(0, 0, w as u16, h as u16, &code[..])
+                .rows()
+                .fill(&mut want);
+            let mut dec = GlyphMask::new(0, 0, w as u16, h as u16, &code[..]).rows();
+            for j in 0..h {
+                if rng.below(4) == 0 {
+                    dec.skip(w as u32);
+                    continue;
+                }
+                let mut cells = std::vec![0i32; w + 1];
+                dec.add_row(&mut cells);
+                let mut sum = 0;
+                for (i, &d) in cells.iter().enumerate() {
+                    sum += d;
+                    let px = if i < w { want[j * w + i] } else { 0 };
+                    assert_eq!(sum, px, "case {case}, row {j}, pixel {i}: {levels:?}");
+                }
+            }
         }
     }
 

@@ -43,10 +43,10 @@
 //! use embedded_graphics::prelude::*;
 //! use embedded_graphics::text::{Alignment, Text};
 //! use softedge::prelude::*;
-//! use softedge::text::{AaTextStyle, CacheSlot, CachedFont, Font, GlyphCache, TextSize};
+//! use softedge::text::{AaTextStyle, CachedFont, Font, GlyphCache, TextSize, SLOT_WORDS};
 //!
 //! let font = Font::bundled()?;
-//! let (mut codes, mut slots, mut scratch) = ([0u8; 2048], [CacheSlot::EMPTY; 32], [0i32; 1024]);
+//! let (mut codes, mut slots, mut scratch) = ([0u8; 2048], [0u32; 32 * SLOT_WORDS], [0i32; 1024]);
 //! let cache = GlyphCache::new(&mut codes, &mut slots, &mut scratch);
 //! let style = AaTextStyle::new(CachedFont::new(&font, TextSize::px(16), &cache), Rgb565::WHITE);
 //!
@@ -88,9 +88,9 @@ use crate::COVER_ONE;
 /// use embedded_graphics::prelude::*;
 /// use embedded_graphics::text::renderer::TextRenderer;
 /// use softedge::style::Opacity;
-/// use softedge::text::{AaTextStyle, CacheSlot, CachedFont, Font, GlyphCache, TextSize};
+/// use softedge::text::{AaTextStyle, CachedFont, Font, GlyphCache, TextSize, SLOT_WORDS};
 /// let font = Font::bundled().unwrap();
-/// let (mut codes, mut slots, mut scratch) = ([0u8; 512], [CacheSlot::EMPTY; 8], [0i32; 512]);
+/// let (mut codes, mut slots, mut scratch) = ([0u8; 512], [0u32; 8 * SLOT_WORDS], [0i32; 512]);
 /// let cache = GlyphCache::new(&mut codes, &mut slots, &mut scratch);
 /// let style = AaTextStyle::new(CachedFont::new(&font, TextSize::px(20), &cache), Rgb565::CYAN)
 ///     .opacity(Opacity::from_ratio(3, 4));
@@ -220,7 +220,7 @@ impl<S: GlyphSource, Col: PixelColor> TextRenderer for AaTextStyle<S, Col> {
             let yb = masked::baseline_row(self.baseline_fine(position.y, baseline));
             let x = i64::from(position.x) * i64::from(FINE_ONE);
             let src = &self.source;
-            let phases = i64::from(src.phases().max(1));
+            let phases = src.phases().clamp(1, 16);
             let mut pen = x;
             let mut prev: Option<u16> = None;
             let mut row = [0i32; 64];
@@ -233,13 +233,7 @@ impl<S: GlyphSource, Col: PixelColor> TextRenderer for AaTextStyle<S, Col> {
                     pen += i64::from(src.kerning(p, g));
                 }
                 prev = Some(g);
-                let q = if self.grid {
-                    ((pen + i64::from(FINE_ONE / 2)) >> FINE_BITS) * phases
-                } else {
-                    (pen * phases + i64::from(FINE_ONE / 2)) >> FINE_BITS
-                };
-                let gx = q.div_euclid(phases).clamp(-(1 << 21), 1 << 21) as i32;
-                let phase = q.rem_euclid(phases) as u8;
+                let (gx, phase) = masked::drawn_x(pen, phases, self.grid);
                 pen += i64::from(src.advance(g));
                 let r = src.mask(g, phase, |m| {
                     let mut dec = m.rows();
@@ -335,24 +329,29 @@ impl<S: GlyphSource, Col: PixelColor + IntoLinear<C>, const C: usize> DrawAaText
                 let _ = canvas.fill_solid(&area, bg);
             }
         }
-        if let Some(color) = style.text_color {
-            let lines = self.placed().map(|(text, p)| Line {
+        // The last line, seen as the lines go by (its end is what `draw`
+        // returns).
+        let last = core::cell::Cell::new(None);
+        let lines = self.placed().map(|(text, p)| {
+            last.set(Some((text, p)));
+            Line {
                 text,
                 x: i64::from(p.x) * i64::from(FINE_ONE),
                 y: style.baseline_fine(p.y, self.text_style.baseline),
-            });
-            masked::draw_lines(
+            }
+        });
+        match style.text_color {
+            Some(color) => masked::draw_lines(
                 canvas,
                 &style.source,
                 lines,
                 color.into_linear(),
                 style.opacity,
                 style.grid,
-            )?;
+            )?,
+            None => lines.for_each(drop),
         }
-        // The last line's end, as embedded-graphics' `draw` returns it.
-        let last = self.placed().last();
-        Ok(last.map_or(self.position, |(line, p)| {
+        Ok(last.get().map_or(self.position, |(line, p)| {
             Point::new(p.x.saturating_add(style.width(line).0), p.y)
         }))
     }

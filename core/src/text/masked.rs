@@ -5,7 +5,7 @@
 //! Takes lines (text, pen start and baseline in fine units), a source, a
 //! linear colour and an opacity; gives the band the text as **one
 //! shape**: every glyph's coverage is written into the cover scratch as
-//! changes ([`BandBuffer::add_mask_row`](crate::band::BandBuffer)), summed
+//! changes (the band's `add_mask`, one change per run of the code), summed
 //! where glyphs overlap (the nonzero rule on the summed coverage, as a
 //! run of outlines is filled), and composed by the sweep the shapes use
 //! (over, in linear light, with the opacity applied to the text as a
@@ -42,10 +42,6 @@ use crate::path::{Flattener, SegmentSink, Shape};
 use crate::raster::DrawError;
 use crate::style::{FillRule, Opacity};
 
-/// Pixels decoded at a time (a glyph wider than this is written in
-/// pieces, which add up to the same changes).
-const CHUNK: usize = 64;
-
 /// One line to draw: its text (no line breaks) and its pen's start on the
 /// baseline, fine units.
 #[derive(Debug, Clone, Copy)]
@@ -76,6 +72,26 @@ pub(crate) fn advance<S: GlyphSource>(src: &S, text: &str) -> (i64, Option<char>
     (pen, missing)
 }
 
+/// A glyph's drawn column and phase for its pen at fine `x`: `x` rounded
+/// to the nearest `1/phases` px (halves up), or to a whole pixel on the
+/// `grid`. Shifts for 1, 2, 4, 8 or 16 phases; a division otherwise.
+#[inline]
+pub(crate) fn drawn_x(x: i64, phases: u8, grid: bool) -> (i32, u8) {
+    let px = |v: i64| v.clamp(-(1 << 21), 1 << 21) as i32;
+    if grid || phases <= 1 {
+        return (px((x + i64::from(FINE_ONE / 2)) >> FINE_BITS), 0);
+    }
+    if phases.is_power_of_two() {
+        let bits = phases.trailing_zeros();
+        let shift = FINE_BITS - bits;
+        let q = (x + (1 << (shift - 1))) >> shift;
+        return (px(q >> bits), (q & (i64::from(phases) - 1)) as u8);
+    }
+    let p = i64::from(phases);
+    let q = (x * p + i64::from(FINE_ONE / 2)) >> FINE_BITS;
+    (px(q.div_euclid(p)), q.rem_euclid(p) as u8)
+}
+
 /// The pixel row whose top edge is nearest to fine `y` (a baseline).
 #[inline]
 pub(crate) fn baseline_row(y: i64) -> i32 {
@@ -100,10 +116,9 @@ pub(crate) fn draw_lines<'t, S: GlyphSource, const C: usize, Col>(
     let band = buf.band();
     let (rows, cols) = (band.row_range(), band.column_range());
     let m = src.line_metrics();
-    let phases = i64::from(src.phases().max(1));
+    let phases = src.phases().clamp(1, 16);
     let mut touched: Option<(i32, i32)> = None;
     let mut missing: Option<char> = None;
-    let mut px = [0i32; CHUNK];
     for line in lines {
         let yb = baseline_row(line.y);
         let (top, bottom) = (
@@ -125,14 +140,7 @@ pub(crate) fn draw_lines<'t, S: GlyphSource, const C: usize, Col>(
                 pen += i64::from(src.kerning(p, g));
             }
             prev = Some(g);
-            // The drawn position: the pen to the nearest phase.
-            let q = if grid {
-                ((pen + i64::from(FINE_ONE / 2)) >> FINE_BITS) * phases
-            } else {
-                (pen * phases + i64::from(FINE_ONE / 2)) >> FINE_BITS
-            };
-            let gx = q.div_euclid(phases).clamp(-(1 << 21), 1 << 21) as i32;
-            let phase = q.rem_euclid(phases) as u8;
+            let (gx, phase) = drawn_x(pen, phases, grid);
             pen += i64::from(src.advance(g));
             let at = Placed {
                 x: gx,
@@ -140,12 +148,12 @@ pub(crate) fn draw_lines<'t, S: GlyphSource, const C: usize, Col>(
                 rows: rows.clone(),
                 cols: cols.clone(),
             };
-            let drawn = src.mask(g, phase, |mask| at.mask(buf, mask, &mut px));
+            let drawn = src.mask(g, phase, |mask| at.mask(buf, mask));
             let span = match drawn {
                 Some(span) => span,
                 None => src.outline(g).and_then(|o| {
                     let fx = i64::from(gx) * i64::from(FINE_ONE)
-                        + i64::from(phase) * i64::from(FINE_ONE) / phases;
+                        + i64::from(phase) * i64::from(FINE_ONE) / i64::from(phases);
                     at.outline(buf, &o, fx)
                 }),
             };
@@ -182,7 +190,6 @@ impl Placed {
         &self,
         buf: &mut BandBuffer<'_, C>,
         mask: &GlyphMask<'_, B>,
-        px: &mut [i32; CHUNK],
     ) -> Option<(i32, i32)> {
         let top = self.y.saturating_add(i32::from(mask.top));
         let bottom = top.saturating_add(i32::from(mask.height));
@@ -196,20 +203,22 @@ impl Placed {
         {
             return None;
         }
-        let w = usize::from(mask.width);
         let mut dec = mask.rows();
         let end = bottom.min(self.rows.end);
-        for y in top..end {
-            let mut off = 0usize;
-            while off < w {
-                let n = (w - off).min(CHUNK);
-                let chunk = &mut px[..n];
-                dec.fill(chunk);
-                if y >= self.rows.start {
-                    buf.add_mask_row(left.saturating_add(off as i32), y, chunk);
+        let w = u32::from(mask.width);
+        if left >= self.cols.start && right < self.cols.end {
+            // The whole width in the band's columns: row by row, straight
+            // into the scratch's cells (rows above the band passed over).
+            for y in top..end {
+                if y < self.rows.start {
+                    dec.skip(w);
+                } else if let Some(cells) = buf.mask_row(left, y, w) {
+                    dec.add_row(cells);
                 }
-                off += n;
             }
+        } else {
+            // Clipped at a side: run by run.
+            buf.add_mask(left, top, w, u32::from(mask.height), || dec.next_run());
         }
         Some((top.max(self.rows.start), end))
     }
@@ -272,5 +281,31 @@ impl<const C: usize> SegmentSink for BandWalker<'_, '_, C> {
             self.rows.start.saturating_mul(FINE_ONE),
             self.rows.end.saturating_mul(FINE_ONE).saturating_sub(1),
         ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn drawn_positions_are_the_nearest_phase() {
+        for phases in 1..=16u8 {
+            for x in (-5000i64..5000).step_by(7).chain([-(1 << 30), 1 << 30]) {
+                let (gx, p) = drawn_x(x, phases, false);
+                // Exact: round(x * phases / 1024), halves up.
+                let q = (x * i64::from(phases) * 2 + 1024).div_euclid(2048);
+                assert_eq!(
+                    (i64::from(gx), i64::from(p)),
+                    (
+                        q.div_euclid(i64::from(phases)).clamp(-(1 << 21), 1 << 21),
+                        q.rem_euclid(i64::from(phases))
+                    ),
+                    "{x} at {phases}"
+                );
+            }
+        }
+        assert_eq!(drawn_x(1535, 4, true), (1, 0));
+        assert_eq!(drawn_x(1536, 4, true), (2, 0));
     }
 }

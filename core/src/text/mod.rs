@@ -90,7 +90,7 @@ pub mod source;
 #[allow(clippy::module_inception)]
 pub mod text;
 
-pub use cache::{CacheSlot, CacheStats, CachedFont, GlyphCache, PROBES};
+pub use cache::{CacheStats, CachedFont, GlyphCache, MEMO, MEMO_WAYS, PROBES, SLOT_WORDS};
 pub use code::{GlyphMask, MaskDecoder, MaskEncoder, LEVEL_MAX};
 #[cfg(feature = "embedded-graphics")]
 pub use eg::{AaTextStyle, DrawAaText};

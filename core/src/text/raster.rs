@@ -171,6 +171,13 @@ impl<'a> RasterFont<'a> {
     #[inline]
     pub fn glyph(&self, c: char) -> Option<u16> {
         let c = c as u32;
+        // Most text is in the first range (ASCII): tried first.
+        if let Some(r) = self.chars.first() {
+            let i = c.wrapping_sub(r.first);
+            if i < u32::from(r.len) {
+                return Some(r.glyph.wrapping_add(i as u16));
+            }
+        }
         // The last range starting at or before `c`.
         let k = self.chars.partition_point(|r| r.first <= c);
         let r = self.chars.get(k.checked_sub(1)?)?;

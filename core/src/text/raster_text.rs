@@ -27,11 +27,11 @@ use crate::style::Opacity;
 /// ```
 /// use softedge::canvas::Canvas;
 /// use softedge::geom::FinePoint;
-/// use softedge::text::{Alignment, CacheSlot, CachedFont, Font, GlyphCache, RasterText, TextSize};
+/// use softedge::text::{Alignment, CachedFont, Font, GlyphCache, RasterText, TextSize, SLOT_WORDS};
 /// use softedge::{Band, BandBuffer};
 ///
 /// let font = Font::bundled().unwrap();
-/// let (mut codes, mut slots, mut scratch) = ([0u8; 1024], [CacheSlot::EMPTY; 16], [0i32; 512]);
+/// let (mut codes, mut slots, mut scratch) = ([0u8; 1024], [0u32; 16 * SLOT_WORDS], [0i32; 512]);
 /// let cache = GlyphCache::new(&mut codes, &mut slots, &mut scratch);
 /// let sans = CachedFont::new(&font, TextSize::px(14), &cache);
 /// let text = RasterText::new("12.5", FinePoint::new(32 * 1024 + 300, 16 * 1024), sans, [4095])

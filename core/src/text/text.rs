@@ -103,11 +103,11 @@ impl<'f, 'a, const C: usize> FontStyle<'f, 'a, C> {
     /// ```
     /// use softedge::canvas::Canvas;
     /// use softedge::geom::FinePoint;
-    /// use softedge::text::{CacheSlot, Font, FontStyle, GlyphCache, Text};
+    /// use softedge::text::{Font, FontStyle, GlyphCache, Text, SLOT_WORDS};
     /// use softedge::{Band, BandBuffer};
     ///
     /// let font = Font::bundled().unwrap();
-    /// let (mut codes, mut slots, mut scratch) = ([0u8; 1024], [CacheSlot::EMPTY; 16], [0i32; 512]);
+    /// let (mut codes, mut slots, mut scratch) = ([0u8; 1024], [0u32; 16 * SLOT_WORDS], [0i32; 512]);
     /// let cache = GlyphCache::new(&mut codes, &mut slots, &mut scratch);
     /// let style = FontStyle::<1>::new(&font, 12, [4095]).with_cache(&cache);
     /// let text = Text::new("1.5 V", FinePoint::from_px(2, 14), style);
