@@ -502,5 +502,5 @@ fn copyright(font: &Font<'_>) -> Option<String> {
                 .collect();
             String::from_utf16(&units).ok()
         })
-        .map(|s| s.replace(['\n', '\r'], " "))
+        .map(|s| s.replace(['\n', '\r'], " ").trim().to_string())
 }

@@ -501,3 +501,116 @@ fn each_prerasterized_glyph_keeps_its_ink() {
     }
     println!("{}", report.join("\n"));
 }
+
+#[test]
+fn damaged_raster_fonts_draw_without_panics() {
+    // Random tables and mask bytes (a corrupted flash image, a hand-made
+    // font): drawing reads everything through checked look-ups.
+    let mut rng = Lcg(0x0033_dead);
+    for case in 0..400 {
+        let mut bytes =
+            |n: u32| -> Vec<u8> { (0..rng.next() % n).map(|_| rng.next() as u8).collect() };
+        let masks = bytes(300);
+        let kerning: Vec<i8> = bytes(40).into_iter().map(|b| b as i8).collect();
+        let glyphs: Vec<RasterGlyph> = bytes(20)
+            .chunks(4)
+            .map(|c| RasterGlyph {
+                advance: u16::from(c[0]) << 4,
+                kern_left: *c.get(1).unwrap_or(&0),
+                kern_right: *c.get(2).unwrap_or(&0),
+            })
+            .collect();
+        let offsets: Vec<u16> = bytes(40).into_iter().map(|b| u16::from(b) * 3).collect();
+        let mut chars: Vec<CharRange> = bytes(12)
+            .chunks(3)
+            .map(|c| CharRange {
+                first: 0x20 + u32::from(c[0]),
+                len: u16::from(*c.get(1).unwrap_or(&1)),
+                glyph: u16::from(*c.get(2).unwrap_or(&0)),
+            })
+            .collect();
+        chars.sort_by_key(|r| r.first);
+        let r = bytes(250);
+        let metrics = RasterMetrics {
+            size_64ths: 1024,
+            line: LineMetrics {
+                ascender: i32::from(r.first().copied().unwrap_or(0)) * 100,
+                descender: -(i32::from(r.get(1).copied().unwrap_or(0)) * 100),
+                line_height: i32::from(r.get(2).copied().unwrap_or(0)) * 100 - 3000,
+                ink_top: -i32::from(r.get(3).copied().unwrap_or(0)),
+                ink_bottom: i32::from(r.get(4).copied().unwrap_or(0)),
+            },
+            phases: r.get(5).copied().unwrap_or(0),
+            advance_shift: r.get(6).copied().unwrap_or(0),
+            kern_shift: r.get(7).copied().unwrap_or(0),
+            kern_columns: r.get(8).copied().unwrap_or(0),
+        };
+        let font = RasterFont::new(
+            metrics,
+            &chars,
+            &glyphs,
+            MaskOffsets::Short(&offsets),
+            &kerning,
+            &masks,
+        );
+        let text: String = (0..rng.next() % 12)
+            .map(|_| char::from_u32(0x20 + rng.next() % 0x80).unwrap_or('?'))
+            .collect();
+        let at = FinePoint::new(
+            (rng.next() % 80) as i32 * 1024 - 20 * 1024 + rng.frac(),
+            (rng.next() % 40) as i32 * 512,
+        );
+        let _ = frame(48, 24, 0, |c| {
+            let _ = RasterText::new(&text, at, &font, [4095])
+                .with_opacity(Opacity::from_ratio(1, 2))
+                .draw(c);
+            Ok(at)
+        });
+        assert!(font.flash_bytes() > 0, "case {case}");
+    }
+}
+
+#[test]
+fn a_cache_without_room_draws_glyphs_from_their_outlines() {
+    // No code bytes, no scratch: every glyph is drawn from its outline
+    // into the same shape (the mask's drawn position), and counted.
+    let font = Font::bundled().unwrap();
+    let text = "Ag 0.5";
+    let at = FinePoint::new(2 * 1024 + 300, 16 * 1024 + 100);
+    let (mut codes, mut slots, mut scratch) =
+        (vec![0u8; 0], vec![0u32; 16 * SLOT_WORDS], vec![0i32; 0]);
+    let none = GlyphCache::new(&mut codes, &mut slots, &mut scratch);
+    let uncached = frame(60, 24, 0, |c| {
+        Text::new(
+            text,
+            at,
+            FontStyle::<1>::new(&font, 14, [4095]).with_cache(&none),
+        )
+        .draw(c)
+    });
+    // Five glyphs with ink; the space has none to keep (kept, 0 bytes).
+    assert_eq!(none.stats().uncached, 5);
+    assert_eq!(none.stats().misses, 1);
+    let (mut codes, mut slots, mut scratch) = (
+        vec![0u8; 4096],
+        vec![0u32; 64 * SLOT_WORDS],
+        vec![0i32; 2048],
+    );
+    let room = GlyphCache::new(&mut codes, &mut slots, &mut scratch);
+    let cached = frame(60, 24, 0, |c| {
+        Text::new(
+            text,
+            at,
+            FontStyle::<1>::new(&font, 14, [4095]).with_cache(&room),
+        )
+        .draw(c)
+    });
+    // The same glyphs at the same places: within a quantization level.
+    let worst = uncached
+        .iter()
+        .zip(&cached)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    assert!(worst <= 1.0 / 29.0, "{worst}");
+    assert!(uncached.iter().sum::<f64>() > 10.0);
+}
