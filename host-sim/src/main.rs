@@ -40,8 +40,8 @@ COMMANDS:
                 rows (default 240x240, 3 channels, rows 16,8,1), and of N
                 stored depth triangles (default 576, a torus).
     font [FONT.ttf] --size PX [--chars LIST] [--text STRING]... [--phases N]
-         [--name NAME] [--tolerance FINE] [--no-kerning] [--crate-path P]
-         [-o OUT.rs]
+         [--name NAME] [--tolerance FINE] [--no-kerning] [--grid]
+         [--crate-path P] [-o OUT.rs]
                 Rasterize a TrueType / OpenType font (default: the bundled
                 font) ahead of time into a Rust `static` RasterFont: each
                 glyph's exact-area coverage (1/29 levels, 5-bit code) at N
@@ -50,8 +50,9 @@ COMMANDS:
                 --chars: comma-separated ascii, latin1, U+XXXX, U+XXXX-U+YYYY
                 or single characters (default ascii); --text: the characters
                 of a string (repeatable); --tolerance: flattening, fine units
-                (default 1); --crate-path: how the source names softedge
-                (default softedge). Writes the source to OUT.rs (default stdout) and
+                (default 1); --grid: the x-height a whole number of pixels
+                (small text on 1-bit displays); --crate-path: how the source
+                names softedge (default softedge). Writes the source to OUT.rs (default stdout) and
                 a report to stderr: missing characters (named, left out),
                 flash bytes by part, what a GlyphCache of the glyphs needs.
     window SCENE.toml [--scale N]
@@ -160,6 +161,7 @@ fn font(args: &[String]) -> Result<(), Failure> {
         kerning: true,
         source_name: String::new(),
         crate_path: "softedge".into(),
+        snap_x_height: false,
     };
     let mut out: Option<PathBuf> = None;
     let mut it = args.iter();
@@ -197,6 +199,7 @@ fn font(args: &[String]) -> Result<(), Failure> {
             "--name" => spec.name = value(a)?,
             "--crate-path" => spec.crate_path = value(a)?,
             "--no-kerning" => spec.kerning = false,
+            "--grid" => spec.snap_x_height = true,
             "-o" | "--out" => out = Some(PathBuf::from(value(a)?)),
             "-h" | "--help" => {
                 print!("{USAGE}");

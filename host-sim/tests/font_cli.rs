@@ -22,6 +22,7 @@ fn bundled_spec(px: u32) -> FontSpec {
         kerning: true,
         source_name: "SoftedgeSans-Subset.ttf (the bundled font)".into(),
         crate_path: "crate".into(),
+        snap_x_height: false,
     }
 }
 

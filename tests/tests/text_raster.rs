@@ -1,9 +1,9 @@
 //! Rasterized text (issue #33) against the independent reference: glyph
 //! outlines read by `ttf-parser` in the test, flattened in `f64` and
 //! clipped exactly to every pixel (`softedge_tests::glyph_ref`), compared
-//! with what softedge draws from a [`RasterFont`] (made here by
-//! `rasterize_glyph`, as `softedge-sim font` makes one) and through a
-//! [`GlyphCache`].
+//! with what softedge draws from a [`RasterFont`] (made at run time by
+//! `softedge_tests::raster_font` with `rasterize_glyph`, as
+//! `softedge-sim font` makes one) and through a [`GlyphCache`].
 //!
 //! - every glyph of the bundled font at 8, 12, 16, 24 and 48 px, at 1, 2
 //!   and 4 phases, at random pen positions: each pixel within 1/32 of the
@@ -17,15 +17,14 @@
 
 use softedge::canvas::Canvas;
 use softedge::geom::FinePoint;
-use softedge::path::Tolerance;
 use softedge::style::Opacity;
 use softedge::text::{
-    rasterize_glyph, CharRange, Font, FontStyle, GlyphCache, LineMetrics, MaskOffsets, RasterFont,
-    RasterGlyph, RasterMetrics, RasterText, Scale, Text, TextSize, SLOT_WORDS,
+    CharRange, Font, FontStyle, GlyphCache, LineMetrics, MaskOffsets, RasterFont, RasterGlyph,
+    RasterMetrics, RasterText, Text, SLOT_WORDS,
 };
 use softedge::{Band, BandBuffer, DrawError};
 use softedge_tests::glyph_ref::{string_outline, RefOutline};
-use std::cell::Cell;
+use softedge_tests::raster_font::Built;
 
 /// A tiny deterministic generator (64-bit LCG, high bits).
 struct Lcg(u64);
@@ -58,105 +57,6 @@ fn font_chars() -> Vec<char> {
     let mut v = characters();
     v.push(' ');
     v
-}
-
-/// A raster font's parts, owned: what `softedge-sim font` writes as a
-/// `static`, made here at run time (no kerning).
-struct Built {
-    metrics: RasterMetrics,
-    chars: Vec<CharRange>,
-    glyphs: Vec<RasterGlyph>,
-    offsets: Vec<u32>,
-    masks: Vec<u8>,
-}
-
-impl Built {
-    fn new(font: &Font<'_>, size: u16, chars: &[char], phases: u8) -> Self {
-        let scale = Scale::new(TextSize::px(size), font.units_per_em());
-        let mut chars: Vec<char> = chars.to_vec();
-        chars.sort_unstable();
-        chars.dedup();
-        let mut cells = vec![0i32; 1 << 16];
-        let scratch = Cell::from_mut(&mut cells[..]).as_slice_of_cells();
-        let (mut glyphs, mut offsets, mut masks) = (Vec::new(), Vec::new(), Vec::new());
-        let (mut top, mut bottom) = (0, 0);
-        let mut ranges: Vec<CharRange> = Vec::new();
-        for (i, &c) in chars.iter().enumerate() {
-            let id = font.glyph(c);
-            for p in 0..phases {
-                offsets.push(masks.len() as u32);
-                let mut code = Vec::new();
-                let b = rasterize_glyph(
-                    font,
-                    id,
-                    scale,
-                    Tolerance::MIN,
-                    i32::from(p) * 1024 / i32::from(phases),
-                    scratch,
-                    |x| {
-                        code.push(x);
-                        true
-                    },
-                )
-                .unwrap();
-                top = top.min(i32::from(b.top));
-                bottom = bottom.max(i32::from(b.top) + i32::from(b.height));
-                masks.extend([
-                    b.left as i8 as u8,
-                    b.top as i8 as u8,
-                    b.width as u8,
-                    b.height as u8,
-                ]);
-                masks.extend(code);
-            }
-            let adv = scale.x_units(i32::from(font.advance(id)));
-            glyphs.push(RasterGlyph {
-                advance: adv as u16,
-                kern_left: 0,
-                kern_right: 0,
-            });
-            match ranges.last_mut() {
-                Some(r) if r.first + u32::from(r.len) == c as u32 => r.len += 1,
-                _ => ranges.push(CharRange {
-                    first: c as u32,
-                    len: 1,
-                    glyph: i as u16,
-                }),
-            }
-        }
-        let line = LineMetrics {
-            ascender: scale.y_units(i32::from(font.ascender())) as i32,
-            descender: scale.y_units(i32::from(font.descender())) as i32,
-            line_height: scale.y_units(font.line_height()) as i32,
-            ink_top: top,
-            ink_bottom: bottom,
-        };
-        Self {
-            metrics: RasterMetrics {
-                size_64ths: u32::from(size) * 64,
-                line,
-                phases,
-                advance_shift: 0,
-                kern_shift: 0,
-                kern_columns: 1,
-            },
-            chars: ranges,
-            glyphs,
-            offsets,
-            masks,
-        }
-    }
-
-    fn font(&self) -> RasterFont<'_> {
-        RasterFont::new(
-            self.metrics,
-            &self.chars,
-            &self.glyphs,
-            MaskOffsets::Long(&self.offsets),
-            &[0],
-            &self.masks,
-        )
-    }
 }
 
 /// Draws into a `w x h` band at `y0` with `draw` and gives each pixel's

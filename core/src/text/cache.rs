@@ -7,7 +7,7 @@
 //! slots ([`SLOT_WORDS`] a glyph kept) and `i32` cells the rasterizer
 //! walks edges into. Gives the
 //! glyphs as masks ([`GlyphSource`]): a glyph met for the first time is
-//! rasterized ([`rasterize_glyph`](super::rasterize_glyph)) and kept;
+//! rasterized ([`rasterize_glyph`]) and kept;
 //! every later band and frame decodes it. So text in a font or size not
 //! converted ahead costs its outline's parsing, flattening and edge walk
 //! once per glyph, not once per band and frame.

@@ -43,6 +43,7 @@
 
 use core::cell::Cell;
 
+use super::one_bit::MAX_CONTRAST_SHIFT;
 use crate::COVER_ONE;
 
 /// The largest level: a whole pixel. Level `v` is `v / LEVEL_MAX` px.
@@ -68,6 +69,39 @@ const fn level_cover() -> [i32; LEVEL_MAX as usize + 1] {
         let m = LEVEL_MAX as i32;
         t[v] = (v as i32 * COVER_ONE + m / 2) / m;
         v += 1;
+    }
+    t
+}
+
+/// The level tables with a contrast gain of `2^shift` (`shift` in
+/// `0..=MAX_CONTRAST_SHIFT`): `clamp(((c - 1/2) << shift) + 1/2, 0, 1)`
+/// of each level's coverage `c`, as [`ContrastBoost`] does to a pixel's
+/// value before a 1-bit ditherer, here to the text's own coverage (its
+/// edges decided mostly by their side of 1/2, the rest of the frame
+/// untouched). Row 0 is [`LEVEL_COVER`].
+///
+/// [`ContrastBoost`]: super::ContrastBoost
+pub const BOOSTED_COVER: [[i32; LEVEL_MAX as usize + 1]; MAX_CONTRAST_SHIFT as usize + 1] =
+    boosted_cover();
+
+const fn boosted_cover() -> [[i32; LEVEL_MAX as usize + 1]; MAX_CONTRAST_SHIFT as usize + 1] {
+    let mut t = [[0i32; LEVEL_MAX as usize + 1]; MAX_CONTRAST_SHIFT as usize + 1];
+    let mut s = 0;
+    while s <= MAX_CONTRAST_SHIFT as usize {
+        let mut v = 0;
+        while v <= LEVEL_MAX as usize {
+            let half = COVER_ONE / 2;
+            let b = ((LEVEL_COVER[v] - half) << s) + half;
+            t[s][v] = if b < 0 {
+                0
+            } else if b > COVER_ONE {
+                COVER_ONE
+            } else {
+                b
+            };
+            v += 1;
+        }
+        s += 1;
     }
     t
 }
@@ -132,8 +166,17 @@ impl<'a, B: CodeBytes + ?Sized> GlyphMask<'a, B> {
 
     /// A decoder at the first pixel.
     pub fn rows(&self) -> MaskDecoder<'a, B> {
+        self.rows_boosted(0)
+    }
+
+    /// A decoder at the first pixel whose partly covered pixels get a
+    /// contrast gain of `2^shift` (see [`BOOSTED_COVER`]; `shift` limited
+    /// to `MAX_CONTRAST_SHIFT`).
+    pub fn rows_boosted(&self, shift: u8) -> MaskDecoder<'a, B> {
+        let s = usize::from(shift.min(MAX_CONTRAST_SHIFT));
         MaskDecoder {
             code: self.code,
+            levels: BOOSTED_COVER.get(s).unwrap_or(&LEVEL_COVER),
             next: 0,
             bits: 0,
             nbits: 0,
@@ -152,6 +195,8 @@ impl<'a, B: CodeBytes + ?Sized> GlyphMask<'a, B> {
 #[derive(Debug, Clone)]
 pub struct MaskDecoder<'a, B: ?Sized = [u8]> {
     code: &'a B,
+    /// Coverage of each level.
+    levels: &'static [i32; LEVEL_MAX as usize + 1],
     /// The next byte to read.
     next: usize,
     /// Bits read and not used, `nbits` of them, low first.
@@ -206,7 +251,7 @@ impl<B: CodeBytes + ?Sized> MaskDecoder<'_, B> {
         if s < RUN_EMPTY {
             self.bits >>= SYMBOL_BITS;
             self.nbits -= SYMBOL_BITS;
-            return (LEVEL_COVER.get(s as usize).copied().unwrap_or(0), 1);
+            return (self.levels.get(s as usize).copied().unwrap_or(0), 1);
         }
         // A run (a damaged code that ends inside one reads 0 bits).
         let len = ((self.bits >> SYMBOL_BITS) & ((1 << RUN_BITS) - 1)) + RUN_MIN;
@@ -264,7 +309,7 @@ impl<B: CodeBytes + ?Sized> MaskDecoder<'_, B> {
             let (v, len) = if s < RUN_EMPTY {
                 bits >>= SYMBOL_BITS;
                 nbits -= SYMBOL_BITS;
-                (LEVEL_COVER.get(s as usize).copied().unwrap_or(0), 1)
+                (self.levels.get(s as usize).copied().unwrap_or(0), 1)
             } else {
                 let len = ((bits >> SYMBOL_BITS) & ((1 << RUN_BITS) - 1)) + RUN_MIN;
                 let used = (SYMBOL_BITS + RUN_BITS).min(nbits);
@@ -334,7 +379,7 @@ impl<B: CodeBytes + ?Sized> MaskDecoder<'_, B> {
             let s = self.bits & ((1 << SYMBOL_BITS) - 1);
             if s < RUN_EMPTY {
                 if let Some(p) = out.get_mut(i) {
-                    *p = LEVEL_COVER.get(s as usize).copied().unwrap_or(0);
+                    *p = self.levels.get(s as usize).copied().unwrap_or(0);
                 }
                 self.bits >>= SYMBOL_BITS;
                 self.nbits -= SYMBOL_BITS;

@@ -1,7 +1,8 @@
 //! [`AaTextStyle`]: embedded-graphics' text idiom, anti-aliased —
 //! `Text::with_alignment("72%", p, style, Alignment::Center).draw(canvas)`
-//! as with a `MonoTextStyle`, the glyphs from a [`RasterFont`] in flash or
-//! an outline font through a [`GlyphCache`] ([`CachedFont`]).
+//! as with a `MonoTextStyle`, the glyphs from a
+//! [`RasterFont`](super::RasterFont) in flash or an outline font through a
+//! [`GlyphCache`](super::GlyphCache) ([`CachedFont`](super::CachedFont)).
 //!
 //! Takes embedded-graphics' `Text` (string, `Point`, character style,
 //! `TextStyle`: alignment, baseline, line height) with an
@@ -10,7 +11,7 @@
 //! laid out as embedded-graphics lays out a `MonoTextStyle`'s (the same
 //! calls to the style's `measure_string` and `line_height`, the same
 //! arithmetic) and the text composed as one anti-aliased shape in linear
-//! light ([`masked`](super::masked)).
+//! light (`text::masked`).
 //!
 //! ## Coordinates (embedded-graphics')
 //!
@@ -35,7 +36,8 @@
 //! drawn). Through `Drawable::draw` (another target, or `(&text).draw`)
 //! each pixel whose coverage is at least one half is set to the text
 //! colour: 1-bit text, the anti-aliasing needs the canvas; a character the
-//! font lacks is skipped there (see [`RasterFont::missing`]).
+//! font lacks is skipped there (see
+//! [`RasterFont::missing`](super::RasterFont::missing)).
 //!
 //! ```
 //! use embedded_graphics::mock_display::MockDisplay;
@@ -109,6 +111,12 @@ pub struct AaTextStyle<S, Col> {
     /// Glyphs on whole pixels (for static text on 1-bit displays, like
     /// [`Sharpen::GRID`](super::Sharpen::GRID)'s glyph origins).
     pub grid: bool,
+    /// The text's coverage steepened by a gain of `2^contrast` before it
+    /// is composed (`0..=4`; 0 by default): on a 1-bit display the text's
+    /// edges are then decided mostly by their side of 1/2, as
+    /// [`ContrastBoost`](super::ContrastBoost) does to a whole frame,
+    /// without touching the rest of the frame.
+    pub contrast: u8,
 }
 
 impl<S: GlyphSource, Col: Copy> AaTextStyle<S, Col> {
@@ -120,6 +128,7 @@ impl<S: GlyphSource, Col: Copy> AaTextStyle<S, Col> {
             background_color: None,
             opacity: Opacity::OPAQUE,
             grid: false,
+            contrast: 0,
         }
     }
 
@@ -138,6 +147,13 @@ impl<S: GlyphSource, Col: Copy> AaTextStyle<S, Col> {
     /// With glyphs on whole pixels.
     pub const fn grid(mut self, on: bool) -> Self {
         self.grid = on;
+        self
+    }
+
+    /// With the text's coverage steepened by `2^shift` (see
+    /// [`contrast`](Self::contrast); `shift` limited to 4).
+    pub const fn contrast(mut self, shift: u8) -> Self {
+        self.contrast = if shift > 4 { 4 } else { shift };
         self
     }
 
@@ -348,6 +364,7 @@ impl<S: GlyphSource, Col: PixelColor + IntoLinear<C>, const C: usize> DrawAaText
                 color.into_linear(),
                 style.opacity,
                 style.grid,
+                style.contrast,
             )?,
             None => lines.for_each(drop),
         }

@@ -99,7 +99,10 @@ pub(crate) fn baseline_row(y: i64) -> i32 {
 }
 
 /// Draws `lines` into the canvas's band as one shape (see [the
-/// module](self)); `grid`: glyphs on whole pixels. Characters the source
+/// module](self)); `grid`: glyphs on whole pixels; `contrast`: the masks'
+/// coverage steepened by `2^contrast` (see
+/// [`BOOSTED_COVER`](super::code::BOOSTED_COVER); a glyph walked from
+/// its outline is not). Characters the source
 /// lacks are skipped (no advance); the first one of the lines that meet
 /// the band is returned as [`DrawError::MissingGlyph`] after the rest is
 /// drawn (so a text reports it in every band it is drawn in, and a text
@@ -111,6 +114,7 @@ pub(crate) fn draw_lines<'t, S: GlyphSource, const C: usize, Col>(
     color: [u16; C],
     opacity: Opacity,
     grid: bool,
+    contrast: u8,
 ) -> Result<(), DrawError> {
     let buf = canvas.buffer();
     let band = buf.band();
@@ -147,6 +151,7 @@ pub(crate) fn draw_lines<'t, S: GlyphSource, const C: usize, Col>(
                 y: yb,
                 rows: rows.clone(),
                 cols: cols.clone(),
+                contrast,
             };
             let drawn = src.mask(g, phase, |mask| at.mask(buf, mask));
             let span = match drawn {
@@ -180,6 +185,8 @@ struct Placed {
     y: i32,
     rows: core::ops::Range<i32>,
     cols: core::ops::Range<i32>,
+    /// The masks' contrast gain, `2^contrast`.
+    contrast: u8,
 }
 
 impl Placed {
@@ -203,7 +210,7 @@ impl Placed {
         {
             return None;
         }
-        let mut dec = mask.rows();
+        let mut dec = mask.rows_boosted(self.contrast);
         let end = bottom.min(self.rows.end);
         let w = u32::from(mask.width);
         if left >= self.cols.start && right < self.cols.end {

@@ -8,7 +8,7 @@
 //! [`Text`](super::Text): `Alphabetic` the first baseline, `Top` /
 //! `Bottom` the ascender / descender line, `Middle` halfway), a source, a
 //! linear colour and an opacity; gives the lines drawn into a band as one
-//! shape ([`masked`](super::masked): each glyph at its drawn position, its
+//! shape (`text::masked`: each glyph at its drawn position, its
 //! pen rounded to the source's phases and its baseline to a pixel) and the
 //! pen after the last glyph. For embedded-graphics' `Text` and `Point`s,
 //! see [`AaTextStyle`](super::AaTextStyle).
@@ -59,6 +59,9 @@ pub struct RasterText<'t, S, const C: usize> {
     pub text_style: TextStyle,
     /// Glyphs on whole pixels.
     pub grid: bool,
+    /// The coverage's contrast gain, `2^contrast` (see
+    /// [`AaTextStyle::contrast`](super::AaTextStyle)).
+    pub contrast: u8,
 }
 
 impl<'t, S: GlyphSource, const C: usize> RasterText<'t, S, C> {
@@ -73,6 +76,7 @@ impl<'t, S: GlyphSource, const C: usize> RasterText<'t, S, C> {
             opacity: Opacity::OPAQUE,
             text_style: TextStyle::default(),
             grid: false,
+            contrast: 0,
         }
     }
 
@@ -103,6 +107,13 @@ impl<'t, S: GlyphSource, const C: usize> RasterText<'t, S, C> {
     /// With glyphs on whole pixels.
     pub fn with_grid(mut self, on: bool) -> Self {
         self.grid = on;
+        self
+    }
+
+    /// With the coverage steepened by `2^shift` before it is composed
+    /// (`shift` limited to 4; for 1-bit displays).
+    pub fn with_contrast(mut self, shift: u8) -> Self {
+        self.contrast = shift.min(4);
         self
     }
 
@@ -160,6 +171,7 @@ impl<'t, S: GlyphSource, const C: usize> RasterText<'t, S, C> {
             self.color,
             self.opacity,
             self.grid,
+            self.contrast,
         )?;
         Ok(self.lines().last().map_or(self.position, |l| {
             let x = l.x + self.width(l.text);

@@ -9,7 +9,7 @@
 //! and its code ([`code`](super::code)) through the sink.
 //!
 //! The outline is flattened ([`Flattener`]) and its edges walked by the
-//! canvas's exact-area edge walker ([`EdgeWalk`](crate::edge::EdgeWalk),
+//! canvas's exact-area edge walker (`edge::EdgeWalk`,
 //! seed 001 with the spill of each crossing) into the scratch as changes
 //! of running coverage, row by row over the glyph's box (from the font's
 //! glyph box, widened by a pixel); a running sum along each row gives

@@ -4,7 +4,7 @@
 //!
 //! Takes a character; gives its glyph, advance, kerning (fine units) and,
 //! at a horizontal sub-pixel phase, its mask ([`GlyphMask`]): what the
-//! text drawing of [`draw_masked`](super::masked) and the
+//! text drawing of `text::masked` and the
 //! embedded-graphics style [`AaTextStyle`](super::AaTextStyle) lay out and
 //! draw.
 

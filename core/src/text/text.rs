@@ -375,6 +375,7 @@ impl<'t, 'f, 'a, const C: usize> Text<'t, 'f, 'a, C> {
                 self.style.color,
                 self.style.opacity,
                 self.style.sharpen.glyph_x,
+                0,
             )?;
             return Ok(self.end());
         }
