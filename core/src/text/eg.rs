@@ -258,7 +258,9 @@ impl<S: GlyphSource, Col: PixelColor> TextRenderer for AaTextStyle<S, Col> {
                         let mut off = 0;
                         while off < usize::from(m.width) {
                             let n = (usize::from(m.width) - off).min(row.len());
-                            let px = &mut row[..n];
+                            let Some(px) = row.get_mut(..n) else {
+                                break;
+                            };
                             dec.fill(px);
                             let lit = px.iter().enumerate().filter(|(_, &v)| 2 * v >= COVER_ONE);
                             let pixels = lit.map(|(i, _)| {

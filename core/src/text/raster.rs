@@ -207,13 +207,13 @@ impl<'a> RasterFont<'a> {
         let p = usize::from(phase.min(self.metrics.phases.saturating_sub(1)));
         let i = usize::from(g) * usize::from(self.metrics.phases.max(1)) + p;
         let at = self.offsets.get(i)?;
-        let head = self.masks.get(at..at + MASK_HEAD)?;
-        let code = self.masks.get(at + MASK_HEAD..)?;
+        let (head, code) = self.masks.get(at..)?.split_first_chunk::<MASK_HEAD>()?;
+        let [left, top, width, height] = *head;
         Some(GlyphMask::new(
-            i16::from(head[0] as i8),
-            i16::from(head[1] as i8),
-            u16::from(head[2]),
-            u16::from(head[3]),
+            i16::from(left as i8),
+            i16::from(top as i8),
+            u16::from(width),
+            u16::from(height),
             code,
         ))
     }

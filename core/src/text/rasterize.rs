@@ -16,8 +16,8 @@
 //! every pixel its winding integral, and the nonzero rule its coverage
 //! (`min(|sum|, 1)` px): the very coverage the canvas composes for the
 //! glyph drawn as a shape. Each pixel is then quantized to its level
-//! (one multiply per pixel, once per glyph rasterized), rounded so that
-//! the glyph keeps its ink (see `Quantizer`).
+//! (shifts, subtractions and compares, once per glyph rasterized),
+//! rounded so that the glyph keeps its ink (see `Quantizer`).
 //!
 //! The box is walked in strips of as many rows as the scratch holds
 //! (`scratch.len() / width`): a first pass finds the box of the inked
@@ -196,7 +196,8 @@ const INK_MIN: i32 = COVER_ONE / (4 * LEVEL_MAX as i32);
 /// less levels), limited to within 3/4 of a level of its own coverage and
 /// to `0..=LEVEL_MAX` (so an empty pixel stays empty and a whole one
 /// whole). In units of 1/65536 level: `x = k * 29` for a coverage of `k`
-/// units (at most `29 * 2^16`, within `i32`).
+/// units (at most `29 * 2^16`, within `i32`; made by shifts: `29 = 32 -
+/// 2 - 1`).
 ///
 /// Nearest rounding alone errs by up to half a level a pixel the same way
 /// along a stem (every row of a vertical bar has the same fraction), so a
@@ -218,7 +219,9 @@ impl Quantizer {
     const BOUND: i32 = 3 << 14;
 
     fn level(&mut self, k: i32) -> u8 {
-        let x = k.clamp(0, COVER_ONE) * i32::from(LEVEL_MAX);
+        // `k * 29` as shifts and subtractions: `32 k - 2 k - k`.
+        let k = k.clamp(0, COVER_ONE);
+        let x = (k << 5) - (k << 1) - k;
         let want = (x + self.carry + Self::ONE / 2).div_euclid(Self::ONE);
         let lo = (x - Self::BOUND + Self::ONE - 1)
             .div_euclid(Self::ONE)
