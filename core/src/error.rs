@@ -167,6 +167,10 @@ pub enum DrawError {
     },
     /// An image was not drawn (its data, format or transform).
     Image(crate::image::ImageError),
+    /// A text has a character its font lacks (the first one; the
+    /// characters the font has were drawn, this one and any other missing
+    /// one were not).
+    MissingGlyph(char),
 }
 
 impl DrawError {
@@ -214,6 +218,9 @@ impl Display for DrawError {
                 Px::fine(p.y)
             ),
             Self::ListFull => f.write_str("triangle list is full"),
+            Self::MissingGlyph(c) => {
+                write!(f, "the font has no glyph for {c:?} (U+{:04X})", *c as u32)
+            }
             Self::BadIndex => f.write_str("a mesh triangle names a point the mesh does not have"),
             Self::Stroke(e) => e.fmt(f),
             Self::Image(e) => e.fmt(f),

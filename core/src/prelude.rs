@@ -16,6 +16,8 @@ pub use crate::path::{Dash, LineCap, LineJoin, MiterLimit};
 pub use crate::raster::DrawError;
 pub use crate::render::{FrameReport, RenderError, Renderer};
 pub use crate::style::{Blend, Edges, FillRule, Opacity};
+#[cfg(feature = "text")]
+pub use crate::text::DrawAaText;
 pub use crate::tone::format::{Gray4Format, Gray8Format, Rgb565Format, Rgb888Format};
 pub use crate::tone::ordered::{Gray4Dither, Rgb565Dither};
 pub use crate::tone::{Bayer8, Curve, DiffusionProfile};

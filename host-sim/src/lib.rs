@@ -16,6 +16,8 @@
 //! - [`image`]: linear and 8-bit images, the linear-to-sRGB conversion for
 //!   viewing on a PC, nearest-neighbour upscaling and simple compositing.
 //! - [`font`]: a 3x5 bitmap font for panel labels.
+//! - [`font_gen`]: fonts rasterized ahead of time for flash
+//!   (`softedge-sim font`).
 //! - [`png_out`]: PNG encoding with the `png` crate (fast, or compact for
 //!   the committed golden images) and reading back.
 //! - [`gallery`]: the demo images of `softedge-sim gallery`.
@@ -47,6 +49,7 @@
 //! ```
 
 pub mod font;
+pub mod font_gen;
 pub mod gallery;
 pub mod image;
 pub mod image_item;

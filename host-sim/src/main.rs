@@ -39,6 +39,22 @@ COMMANDS:
                 scratch, z-buffer depth and coverage) for bands of each R
                 rows (default 240x240, 3 channels, rows 16,8,1), and of N
                 stored depth triangles (default 576, a torus).
+    font [FONT.ttf] --size PX [--chars LIST] [--text STRING]... [--phases N]
+         [--name NAME] [--tolerance FINE] [--no-kerning] [--grid]
+         [--crate-path P] [-o OUT.rs]
+                Rasterize a TrueType / OpenType font (default: the bundled
+                font) ahead of time into a Rust `static` RasterFont: each
+                glyph's exact-area coverage (1/29 levels, 5-bit code) at N
+                horizontal phases (default 1: whole pixels), its advance and
+                kerning. --size: pixels (fractions allowed, e.g. 12.5);
+                --chars: comma-separated ascii, latin1, U+XXXX, U+XXXX-U+YYYY
+                or single characters (default ascii); --text: the characters
+                of a string (repeatable); --tolerance: flattening, fine units
+                (default 1); --grid: the x-height a whole number of pixels
+                (small text on 1-bit displays); --crate-path: how the source
+                names softedge (default softedge). Writes the source to OUT.rs (default stdout) and
+                a report to stderr: missing characters (named, left out),
+                flash bytes by part, what a GlyphCache of the glyphs needs.
     window SCENE.toml [--scale N]
                 Show the scene in a window (only with the `window` feature,
                 which needs SDL2).
@@ -89,6 +105,7 @@ fn run(args: &[String]) -> Result<(), Failure> {
         "crc" => crc(&args[1..]),
         "bits" => bits(&args[1..]),
         "memory" => memory(&args[1..]),
+        "font" => font(&args[1..]),
         "window" => window(&args[1..]),
         other => Err(Failure::Usage(format!("unknown command `{other}`"))),
     }
@@ -126,6 +143,103 @@ fn memory(args: &[String]) -> Result<(), Failure> {
         }
     }
     print!("{}", softedge_sim::memory::report(w, h, ch, &rows, tris));
+    Ok(())
+}
+
+fn font(args: &[String]) -> Result<(), Failure> {
+    use softedge_sim::font_gen::{generate, parse_chars, FontSpec};
+    let mut path: Option<String> = None;
+    let mut size: Option<u32> = None;
+    let mut chars: Vec<char> = Vec::new();
+    let mut named = false;
+    let mut spec = FontSpec {
+        name: String::new(),
+        size_64ths: 0,
+        chars: Vec::new(),
+        phases: 1,
+        tolerance: softedge::path::Tolerance::MIN,
+        kerning: true,
+        source_name: String::new(),
+        crate_path: "softedge".into(),
+        snap_x_height: false,
+    };
+    let mut out: Option<PathBuf> = None;
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let mut value = |name: &str| {
+            it.next()
+                .cloned()
+                .ok_or_else(|| Failure::Usage(format!("{name} needs a value")))
+        };
+        match a.as_str() {
+            "--size" => {
+                let v = value(a)?;
+                let px = v
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|p| (1.0 / 64.0..=512.0).contains(p))
+                    .ok_or_else(|| {
+                        Failure::Usage(format!("--size takes pixels in 1/64..=512, not `{v}`"))
+                    })?;
+                size = Some((px * 64.0).round() as u32);
+            }
+            "--chars" => {
+                chars.extend(parse_chars(&value(a)?).map_err(Failure::Usage)?);
+                named = true;
+            }
+            "--text" => {
+                chars.extend(value(a)?.chars().filter(|&c| c != '\n' && c != '\r'));
+                named = true;
+            }
+            "--phases" => spec.phases = number(a, &value(a)?, 1, 16)? as u8,
+            "--tolerance" => {
+                spec.tolerance =
+                    softedge::path::Tolerance::new(number(a, &value(a)?, 1, 256)? as u16)
+            }
+            "--name" => spec.name = value(a)?,
+            "--crate-path" => spec.crate_path = value(a)?,
+            "--no-kerning" => spec.kerning = false,
+            "--grid" => spec.snap_x_height = true,
+            "-o" | "--out" => out = Some(PathBuf::from(value(a)?)),
+            "-h" | "--help" => {
+                print!("{USAGE}");
+                return Ok(());
+            }
+            other if other.starts_with('-') => {
+                return Err(Failure::Usage(format!("unknown font option `{other}`")))
+            }
+            other => {
+                if path.replace(other.to_string()).is_some() {
+                    return Err(Failure::Usage("font takes one font file".into()));
+                }
+            }
+        }
+    }
+    spec.size_64ths = size.ok_or_else(|| Failure::Usage("font needs --size PX".into()))?;
+    if !named {
+        chars = parse_chars("ascii").map_err(Failure::Usage)?;
+    }
+    spec.chars = chars;
+    let data = match &path {
+        Some(p) => std::fs::read(p).map_err(|e| Failure::Run(format!("cannot read {p}: {e}")))?,
+        None => softedge::text::bundled::SOFTEDGE_SANS.to_vec(),
+    };
+    spec.source_name = match &path {
+        Some(p) => std::path::Path::new(p)
+            .file_name()
+            .map_or(p.clone(), |f| f.to_string_lossy().into_owned()),
+        None => "SoftedgeSans-Subset.ttf (the bundled font)".into(),
+    };
+    if spec.name.is_empty() {
+        spec.name = format!("FONT_{}", spec.size_64ths / 64);
+    }
+    let (source, report) = generate(&data, &spec).map_err(Failure::Run)?;
+    match &out {
+        Some(o) => std::fs::write(o, &source)
+            .map_err(|e| Failure::Run(format!("cannot write {}: {e}", o.display())))?,
+        None => print!("{source}"),
+    }
+    eprint!("{}", report.text(&spec));
     Ok(())
 }
 

@@ -270,8 +270,10 @@ fn gallery_and_example_scenes_match_the_golden_images() {
         println!("wrote {} golden images to {}", images.len(), dir.display());
     }
     assert!(problems.is_empty(), "{}", report(&dir, &problems));
-    // The goldens are committed: keep the set well under 1 MiB.
-    const BUDGET: u64 = 512 * 1024;
+    // The goldens are committed: keep the set well under 1 MiB (640 KiB
+    // since the gallery's images 18 and 13's raster text: 19 images and
+    // the example scenes, about 530 KB).
+    const BUDGET: u64 = 640 * 1024;
     let total: u64 = images
         .iter()
         .map(|(n, _)| std::fs::metadata(dir.join(n)).unwrap().len())

@@ -13,6 +13,9 @@
 //!   sampling with exact depth comparisons: the hidden-surface reference.
 //! - [`path_ref`]: `f64` winding numbers, scanline areas, exact disc areas,
 //!   curve distances and stroke unions: the reference of the path tests.
+//! - [`raster_font`]: fonts rasterized ahead of time, made at run time
+//!   (the code under test's own rasterizer: what the text tests draw, not
+//!   a reference).
 //! - [`glyph_ref`]: glyph outlines read by `ttf-parser`, flattened in `f64`
 //!   within 1e-5 px, and their exact area in every pixel: the reference of
 //!   the text tests.
@@ -22,6 +25,7 @@ pub mod exact;
 pub mod frame;
 pub mod glyph_ref;
 pub mod path_ref;
+pub mod raster_font;
 pub mod ratio;
 pub mod shapes;
 pub mod visible;

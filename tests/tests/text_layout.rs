@@ -133,28 +133,42 @@ fn run_advance_is_the_sum_of_advances_and_kerning() {
 }
 
 #[test]
-fn a_missing_character_draws_the_notdef_glyph() {
+fn a_missing_character_is_left_out_not_drawn_as_a_notdef_box() {
+    // Issue #33 (and #34's "characters missing from a font are accepted
+    // silently"): a character the font lacks is not drawn as `.notdef` and
+    // takes no advance; `Text::draw` reports it (tests/text_raster.rs).
     let font = font();
     assert!(!font.has_glyph('\u{4e2d}'));
     let scale = Scale::new(TextSize::px(20), font.units_per_em());
     let at = FinePoint::new(3 * 1024 + 100, 24 * 1024 + 77);
-    let missing = frame(30, 32, |c| {
-        let run = GlyphRun::new(&font, "\u{4e2d}", at, scale);
-        c.fill(
-            &run,
-            [4095],
-            FillRule::NonZero,
-            Blend::Over,
-            Opacity::OPAQUE,
-        )
-        .unwrap();
-    });
+    let draw = |s: &'static str| {
+        frame(60, 32, |c| {
+            let run = GlyphRun::new(&font, s, at, scale);
+            c.fill(
+                &run,
+                [4095],
+                FillRule::NonZero,
+                Blend::Over,
+                Opacity::OPAQUE,
+            )
+            .unwrap();
+        })
+    };
+    let alone = draw("\u{4e2d}");
+    assert!(alone.iter().all(|&v| v == 0), "nothing drawn");
+    assert_eq!(draw("A\u{4e2d}B"), draw("AB"));
+    let run = GlyphRun::new(&font, "A\u{4e2d}B", at, scale);
+    assert_eq!(
+        run.advance(),
+        GlyphRun::new(&font, "AB", at, scale).advance()
+    );
+    assert_eq!(font.missing("A\u{4e2d}B").collect::<String>(), "\u{4e2d}");
+    // The `.notdef` glyph itself still draws when asked for by id.
     let notdef = frame(30, 32, |c| {
         let g = Glyph::new(&font, GlyphId(0), at, scale);
         c.fill_shape(&g, [4095], FillRule::NonZero, Blend::Over, Opacity::OPAQUE)
             .unwrap();
     });
-    assert_eq!(missing, notdef);
     let lit: u32 = notdef.iter().map(|&v| u32::from(v)).sum();
     assert!(lit > 4095 * 20, "the .notdef box has ink: {lit}");
 }

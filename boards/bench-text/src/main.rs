@@ -6,12 +6,25 @@
 //! without the `text` feature, runs it and prints the table and the flash
 //! sizes.
 //!
+//! Issue #33's label: `LABEL` (55 glyphs in four lines) in a 16-px font,
+//! white on black, on a 240x240 Rgb565 frame in 16-row bands, drawn with
+//! embedded-graphics' `Text` and softedge's `AaTextStyle`: `label_empty`
+//! (the frame without it), `label_prerasterized` (the bundled font
+//! rasterized ahead of time, `softedge::text::bundled::SANS_16`),
+//! `label_outline_first` / `label_outline_cached` (the bundled outline
+//! font at 16 px through a `GlyphCache`: the first frame, every glyph
+//! rasterized, and the next one, every glyph found), `label_outline` (the
+//! outline font without a cache, `softedge::text::Text`). The marginal
+//! cost is the frame less `label_empty`.
+//!
 //! Output:
 //!
 //! ```text
 //! insns_per_tick <num>/<den>
 //! insns <frame> <glyphs> <instructions>
 //! font_bytes <size of a Font>
+//! font_flash <name> <glyphs> <bytes>    a RasterFont's tables and masks
+//! cache <code bytes used> <glyphs kept> <RAM of the cache's slices>
 //! stack_bytes <n>
 //! done
 //! ```
@@ -43,6 +56,9 @@ use softedge::tone::Curve;
 use softedge::{BandBuffer, DrawError};
 use softedge_board_common::{self as fw, insns::Counter, Line};
 
+#[cfg(feature = "text")]
+mod fonts;
+
 const W: u16 = 320;
 const H: u16 = 240;
 const ROWS: u16 = 16;
@@ -55,6 +71,22 @@ const ACC_ONE: usize = BandBuffer::<3>::acc_len(W, H);
 const COVER_ONE: usize = BandBuffer::<3>::cover_len(W, H);
 
 static RGB565: Rgb565Format = Rgb565Format::new(Curve::Srgb);
+
+/// Issue #33's label frame: 240x240, 16-row bands.
+const LW: u16 = 240;
+const LH: u16 = 240;
+const LACC_LEN: usize = BandBuffer::<3>::acc_len(LW, ROWS);
+const LCOVER_LEN: usize = BandBuffer::<3>::cover_len(LW, ROWS);
+/// The label (LVGL 9.5 draws it in Montserrat 16 for 0.554 M).
+#[cfg(feature = "text")]
+const LABEL: &str = "The quick brown\nfox: 0123 °C\nSphinx of black\nquartz 3.71 V";
+/// The glyph cache's slices: code bytes, slots, rasterizer cells.
+#[cfg(feature = "text")]
+const CACHE_CODES: usize = 2048;
+#[cfg(feature = "text")]
+const CACHE_SLOTS: usize = 64;
+#[cfg(feature = "text")]
+const CACHE_CELLS: usize = 512;
 
 /// A display that takes the colours and keeps a checksum (so nothing is
 /// optimised away); its cost is the same in every frame.
@@ -116,6 +148,8 @@ fn main() -> ! {
     static mut SLOT: [WalkSlot<3>; SLOTS] = [WalkSlot::EMPTY; SLOTS];
     static mut ACC1: [i32; ACC_ONE] = [0; ACC_ONE];
     static mut COVER1: [i32; COVER_ONE] = [0; COVER_ONE];
+    static mut LACC: [i32; LACC_LEN] = [0; LACC_LEN];
+    static mut LCOVER: [i32; LCOVER_LEN] = [0; LCOVER_LEN];
     fw::stack::paint();
     let Some(core) = cortex_m::Peripherals::take() else {
         fw::exit(false)
@@ -234,7 +268,114 @@ fn main() -> ! {
                 .print();
         }
     }
-    ok &= measured_ok;
+    // Issue #33's label on a 240x240 frame.
+    #[cfg_attr(not(feature = "text"), allow(unused_mut))]
+    let mut cache_ok = true;
+    let Ok(mut label_renderer) = Renderer::new(LACC, LCOVER, &mut [], LW, LH, ROWS) else {
+        fw::exit(false)
+    };
+    let mut label_frame =
+        |name: &str,
+         glyphs: u64,
+         draw: &mut dyn FnMut(&mut Canvas<'_, '_, 3, Rgb565>) -> Result<(), DrawError>| {
+            let mut good = false;
+            let ticks = counter.measure(|| {
+                good = label_renderer
+                    .render(&mut sink, &RGB565, [0, 0, 0], |c| draw(c))
+                    .is_ok();
+            });
+            ok &= good;
+            Line::new()
+                .text(if good { "insns " } else { "error " })
+                .text(name)
+                .text(" ")
+                .dec(glyphs)
+                .text(" ")
+                .dec(counter.insns(ticks))
+                .print();
+        };
+    // Twice: the first frame of a renderer clears its band buffer (about
+    // 85 k more); the second is the steady state every later frame has.
+    label_frame("label_empty_first", 0, &mut |_| Ok(()));
+    label_frame("label_empty", 0, &mut |_| Ok(()));
+    #[cfg(feature = "text")]
+    {
+        use embedded_graphics::prelude::*;
+        use embedded_graphics::text::{Baseline, Text as EgText};
+        use softedge::text::DrawAaText;
+        use softedge::text::{
+            bundled, AaTextStyle, CachedFont, Font, GlyphCache, TextSize, SLOT_WORDS,
+        };
+        static mut CODES: [u8; CACHE_CODES] = [0; CACHE_CODES];
+        static mut SLOTS: [u32; CACHE_SLOTS * SLOT_WORDS] = [0; CACHE_SLOTS * SLOT_WORDS];
+        static mut CELLS: [i32; CACHE_CELLS] = [0; CACHE_CELLS];
+        let n = glyphs(LABEL);
+        let at = Point::new(8, 8);
+        let white = Rgb565::new(31, 63, 31);
+        let raster = AaTextStyle::new(&bundled::SANS_16, white);
+        label_frame("label_prerasterized", n, &mut |c| {
+            EgText::with_baseline(LABEL, at, raster, Baseline::Top)
+                .draw(c)
+                .map(|_| ())
+        });
+        let Ok(font) = Font::bundled() else {
+            fw::exit(false)
+        };
+        // SAFETY: the cache's statics are borrowed once, here, for the
+        // rest of `main` (single core, no interrupt touches them).
+        let (codes, slots, cells) = unsafe {
+            (
+                &mut *core::ptr::addr_of_mut!(CODES),
+                &mut *core::ptr::addr_of_mut!(SLOTS),
+                &mut *core::ptr::addr_of_mut!(CELLS),
+            )
+        };
+        let cache = GlyphCache::new(codes, slots, cells);
+        let outline = AaTextStyle::new(CachedFont::new(&font, TextSize::px(16), &cache), white);
+        for name in ["label_outline_first", "label_outline_cached"] {
+            label_frame(name, n, &mut |c| {
+                EgText::with_baseline(LABEL, at, outline, Baseline::Top)
+                    .draw(c)
+                    .map(|_| ())
+            });
+        }
+        cache_ok &= cache.stats().uncached == 0;
+        Line::new()
+            .text("cache ")
+            .dec(cache.used_bytes() as u64)
+            .text(" ")
+            .dec(cache.glyphs() as u64)
+            .text(" ")
+            .dec(
+                (CACHE_CODES
+                    + CACHE_SLOTS * SLOT_WORDS * 4
+                    + core::mem::size_of::<GlyphCache<'static>>()
+                    + CACHE_CELLS * 4) as u64,
+            )
+            .print();
+        let style = softedge::text::FontStyle::<3>::new(&font, 16, [4095, 4095, 4095]);
+        let direct = softedge::text::Text::with_baseline(
+            LABEL,
+            FinePoint::from_px(8, 8),
+            style,
+            softedge::text::Baseline::Top,
+        );
+        label_frame("label_outline", n, &mut |c| direct.draw(c).map(|_| ()));
+        for (name, f) in [
+            ("sans16", &bundled::SANS_16),
+            ("latin1", &fonts::latin1::SANS_16_LATIN1),
+        ] {
+            Line::new()
+                .text("font_flash ")
+                .text(name)
+                .text(" ")
+                .dec(f.glyph_count() as u64)
+                .text(" ")
+                .dec(f.flash_bytes() as u64)
+                .print();
+        }
+    }
+    ok &= measured_ok && cache_ok;
     Line::new().text("checksum ").hex8(sink.0).print();
     Line::new()
         .text("stack_bytes ")

@@ -6,7 +6,11 @@
 //! drawn anti-aliased in painter's order; white is `BinaryColor::On`, the
 //! gauge's track a linear gray (`[1024]`: a quarter of full intensity, so
 //! a quarter of its pixels light up once dithered); the text is
-//! embedded-graphics' mono font, drawn into the canvas as opaque pixels.
+//! embedded-graphics' `Text` with softedge's `AaTextStyle`: the bundled
+//! font at 10 px rasterized ahead of time with its x-height on the pixel
+//! grid (`label_font.rs`), glyphs on whole pixels and the text's own
+//! contrast gain of 4, what keeps 10-12 px text legible once dithered
+//! (`tests/tests/text_one_bit.rs`).
 //!
 //! A reading is `0..=FULL_SCALE` over 270 degrees, clockwise from 135
 //! degrees (bottom left) on screen, as embedded-graphics measures angles;
@@ -14,8 +18,6 @@
 //! fractions of a pixel, which the dithering shows as shifting patterns
 //! along the edges.
 
-use embedded_graphics::mono_font::ascii::FONT_6X10;
-use embedded_graphics::mono_font::MonoTextStyle;
 use embedded_graphics::pixelcolor::BinaryColor;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Circle;
@@ -24,6 +26,12 @@ use softedge::geom::FINE_ONE;
 use softedge::path;
 use softedge::prelude::*;
 use softedge::scene3d::Angle;
+use softedge::text::AaTextStyle;
+
+// The value's and the label's characters: the bundled font at 10 px, made
+// by `softedge-sim font --size 10 --grid --chars U+0030-U+0039 --text
+// " %F-SBAYER" --name LABEL_FONT`.
+include!("label_font.rs");
 
 /// Steps of a reading over the whole scale: one step is `270 / 4096`
 /// degree, exactly 12 of `scene3d::Angle`'s 65536 per turn.
@@ -232,14 +240,12 @@ impl Panel {
         cap(0).into_styled(value).draw(canvas)?;
         cap(self.gauge).into_styled(value).draw(canvas)?;
 
-        // Text draws into the canvas as an embedded-graphics DrawTarget,
-        // which cannot fail.
-        let font = MonoTextStyle::new(&FONT_6X10, WHITE);
+        let font = AaTextStyle::new(&LABEL_FONT, WHITE).grid(true).contrast(2);
         let digits = percent(self.gauge);
         // ASCII is always UTF-8.
         let value_text = core::str::from_utf8(&digits).unwrap_or("---");
-        let _ = Text::with_text_style(value_text, VALUE_AT, font, centred()).draw(canvas);
-        let _ = Text::with_text_style(self.label, LABEL_AT, font, centred()).draw(canvas);
+        Text::with_text_style(value_text, VALUE_AT, font, centred()).draw(canvas)?;
+        Text::with_text_style(self.label, LABEL_AT, font, centred()).draw(canvas)?;
         Ok(())
     }
 }

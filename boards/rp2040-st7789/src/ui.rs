@@ -9,8 +9,10 @@
 //! gauge inside it (a track and a value arc with round caps), a readout
 //! of the needle's value on a translucent panel over the dial's rim, and
 //! a rounded button. Everything is drawn anti-aliased, in painter's order,
-//! in `Rgb565` colours (sRGB, composed in linear light); the text is
-//! embedded-graphics' mono font, drawn into the canvas as opaque pixels.
+//! in `Rgb565` colours (sRGB, composed in linear light), the text too:
+//! embedded-graphics' `Text` with softedge's `AaTextStyle`, its glyphs
+//! rasterized ahead of time (the readout's digits at 24 px,
+//! `readout_font.rs`; the label the crate's `text::bundled::SANS_12`).
 //!
 //! A reading is `0..=FULL_SCALE` over the dial's 270 degrees, clockwise
 //! from 135 degrees (bottom left) on screen, as embedded-graphics measures
@@ -18,8 +20,6 @@
 //! (`FinePoint`), so the needle and the value arc move by fractions of a
 //! pixel from one frame to the next.
 
-use embedded_graphics::mono_font::ascii::{FONT_10X20, FONT_6X10};
-use embedded_graphics::mono_font::MonoTextStyle;
 use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::{Circle, Rectangle, RoundedRectangle};
@@ -28,6 +28,11 @@ use softedge::geom::{FINE_BITS, FINE_ONE};
 use softedge::path;
 use softedge::prelude::*;
 use softedge::scene3d::Angle;
+use softedge::text::{bundled::SANS_12, AaTextStyle, RasterFont};
+
+// The readout's digits: the bundled font at 24 px, made by
+// `softedge-sim font --size 24 --chars U+0030-U+0039 --name READOUT_FONT`.
+include!("readout_font.rs");
 
 /// Steps of a reading over the whole scale. 4096 makes one step
 /// `270 / 4096` degree, exactly 12 of `scene3d::Angle`'s 65536 per turn.
@@ -207,13 +212,13 @@ fn centred() -> embedded_graphics::text::TextStyle {
 }
 
 /// Where the readout's digits go.
-fn readout_text(digits: &[u8; 3]) -> Text<'_, MonoTextStyle<'static, Rgb565>> {
+fn readout_text(digits: &[u8; 3]) -> Text<'_, AaTextStyle<&'static RasterFont<'static>, Rgb565>> {
     // ASCII digits are always UTF-8.
-    let s = core::str::from_utf8(digits).unwrap_or("---");
+    let s = core::str::from_utf8(digits).unwrap_or("000");
     Text::with_text_style(
         s,
         READOUT.center(),
-        MonoTextStyle::new(&FONT_10X20, TEXT),
+        AaTextStyle::new(&READOUT_FONT, TEXT),
         centred(),
     )
 }
@@ -285,9 +290,7 @@ impl Panel {
             .into_styled(AaStyle::with_fill(PANEL).opacity(PANEL_OPACITY))
             .draw(canvas)?;
         let digits = percent_digits(self.needle);
-        // Text draws into the canvas as an embedded-graphics DrawTarget,
-        // which cannot fail.
-        let _ = readout_text(&digits).draw(canvas);
+        readout_text(&digits).draw(canvas)?;
 
         // The button.
         RoundedRectangle::with_equal_corners(BUTTON, Size::new_equal(BUTTON_CORNER))
@@ -297,8 +300,8 @@ impl Panel {
                     .stroke_width(BUTTON_EDGE_W),
             )
             .draw(canvas)?;
-        let label = MonoTextStyle::new(&FONT_6X10, TEXT);
-        let _ = Text::with_text_style("MODE", BUTTON.center(), label, centred()).draw(canvas);
+        let label = AaTextStyle::new(&SANS_12, TEXT);
+        Text::with_text_style("MODE", BUTTON.center(), label, centred()).draw(canvas)?;
         Ok(())
     }
 

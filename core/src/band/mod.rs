@@ -62,6 +62,9 @@ mod depth;
 mod errors;
 mod gradient;
 pub(crate) mod image;
+// Used by text's glyph masks only.
+#[cfg(feature = "text")]
+mod mask;
 mod pixels;
 mod sweep;
 pub(crate) mod tags;

@@ -13,6 +13,13 @@
 //! the crate's `fonts/` folder. The linker drops the bytes from any
 //! firmware that does not use them.
 //!
+//! The same font rasterized ahead of time at 12 and 16 px ([`SANS_12`],
+//! [`SANS_16`]: every character of the subset but `.notdef`, whole-pixel
+//! positions, made by `softedge-sim font`, 6 364 and 8 200 bytes of
+//! flash): [`RasterFont`](super::RasterFont)s to draw with no parsing at
+//! all, through [`AaTextStyle`](super::AaTextStyle) or
+//! [`RasterText`](super::RasterText).
+//!
 //! [`Font::new`]: super::Font::new
 //! [`Font::bundled`]: super::Font::bundled
 
@@ -22,3 +29,6 @@
 /// assert_eq!(&softedge::text::bundled::SOFTEDGE_SANS[..4], &[0, 1, 0, 0]);
 /// ```
 pub static SOFTEDGE_SANS: &[u8] = include_bytes!("../../fonts/SoftedgeSans-Subset.ttf");
+
+pub use super::sans12::SANS_12;
+pub use super::sans16::SANS_16;

@@ -912,6 +912,20 @@ impl<'a> Font<'a> {
         self.face.glyph_index(c).is_some()
     }
 
+    /// The characters of `text` the font lacks (line breaks are not
+    /// characters), in order: what [`Text::draw`](super::Text::draw)
+    /// reports and leaves out.
+    ///
+    /// ```
+    /// let font = softedge::text::Font::bundled().unwrap();
+    /// let missing: String = font.missing("24 °C\nÄ 中").collect();
+    /// assert_eq!(missing, "Ä中");
+    /// ```
+    pub fn missing<'t>(&'t self, text: &'t str) -> impl Iterator<Item = char> + 't {
+        text.chars()
+            .filter(move |&c| c != '\n' && c != '\r' && !self.has_glyph(c))
+    }
+
     /// The advance width of a glyph, font units (0 when unknown).
     pub fn advance(&self, g: GlyphId) -> u16 {
         self.face.glyph_hor_advance(g).unwrap_or(0)

@@ -1,12 +1,28 @@
-//! Anti-aliased text from outline fonts (issue #17).
+//! Anti-aliased text: fonts rasterized ahead of time (issue #33), outline
+//! fonts through a glyph cache or drawn directly (issue #17), and
+//! embedded-graphics' text idiom.
 //!
-//! Takes a TrueType / OpenType font file (`glyf` or CFF outlines) in flash
+//! The embedded-graphics way first: `Text` with an [`AaTextStyle`] in
+//! place of a `MonoTextStyle` ([`eg`]), its glyphs from a [`RasterFont`]
+//! (a `static` in flash made by `softedge-sim font`, or the crate's
+//! [`bundled::SANS_16`]) or a [`CachedFont`] (an outline font at a size
+//! through a [`GlyphCache`] in RAM). Both give glyph masks: the exact-area
+//! coverage of each glyph's outline at its drawn position, decoded into
+//! the band's coverage scratch and composed like any shape, in linear
+//! light. [`RasterText`] is the same at sub-pixel positions in fine
+//! units.
+//!
+//! The outline path takes a TrueType / OpenType font file (`glyf` or CFF
+//! outlines) in flash
 //! — `include_bytes!`, or the bundled [`bundled::SOFTEDGE_SANS`] — and a
 //! string with a style; gives the canvas each line as one shape of glyph
 //! outlines, placed and scaled on the fine grid (1/1024 px), so that text
 //! is filled like any path: exact-area anti-aliasing, in linear light
 //! (γ-correct after the tone stage), at any size from 1 to 2048 px, at
-//! sub-pixel positions (1/1024 px), with pair kerning.
+//! sub-pixel positions (1/1024 px), with pair kerning. A character a font
+//! lacks is left out and reported ([`DrawError::MissingGlyph`]).
+//!
+//! [`DrawError::MissingGlyph`]: crate::DrawError::MissingGlyph
 //!
 //! ```
 //! use softedge::canvas::Canvas;
@@ -42,7 +58,15 @@
 //! | [`text`] | [`Text`] (draw, measure) and [`FontStyle`] (font, size, colour, opacity) |
 //! | [`sharpen`] | [`Sharpen`]: baseline, x-height and glyph origins on the pixel grid, for 1-bit displays |
 //! | [`one_bit`] | [`ContrastBoost`]: steeper coverage before 1-bit dithering (gain 2^shift, shifts only) |
-//! | [`bundled`] | the bundled font's bytes (16 648) |
+//! | [`bundled`] | the bundled font's bytes (16 648), and the font rasterized ahead at 12 and 16 px |
+//! | [`code`] | the 5-bit coverage code of rasterized glyphs ([`GlyphMask`], [`MaskDecoder`], [`MaskEncoder`]): levels `v / 29`, runs |
+//! | [`rasterize`] | [`rasterize_glyph`]: one glyph's outline to its mask (the canvas's exact edge walk), for fonts made ahead and the cache |
+//! | [`raster`] | [`RasterFont`]: a font rasterized ahead of time, a `static` (character ranges, advances, kerning classes, masks per phase) |
+//! | [`cache`] | [`GlyphCache`] (caller RAM) and [`CachedFont`]: outline glyphs rasterized once |
+//! | [`source`] | [`GlyphSource`]: what both give (glyphs, advances, kerning, masks), [`LineMetrics`] |
+//! | `masked` | lines of masks into a band: the drawn positions, the scratch, one compose |
+//! | [`raster_text`] | [`RasterText`]: rasterized glyphs at a fine position |
+//! | [`eg`] | [`AaTextStyle`] (embedded-graphics' `TextRenderer`, `CharacterStyle`) and [`DrawAaText`] |
 //!
 //! ## Floating point
 //!
@@ -69,22 +93,41 @@
 //! outline): never a panic.
 
 pub mod bundled;
+pub mod cache;
+pub mod code;
+#[cfg(feature = "embedded-graphics")]
+pub mod eg;
 pub mod font;
 pub mod layout;
+pub(crate) mod masked;
 pub mod one_bit;
 pub mod outline;
+pub mod raster;
+pub mod raster_text;
+pub mod rasterize;
 pub mod run;
+mod sans12;
+mod sans16;
 pub mod scale;
 pub mod sharpen;
+pub mod source;
 #[allow(clippy::module_inception)]
 pub mod text;
 
+pub use cache::{CacheStats, CachedFont, GlyphCache, MEMO, MEMO_WAYS, PROBES, SLOT_WORDS};
+pub use code::{GlyphMask, MaskDecoder, MaskEncoder, BOOSTED_COVER, LEVEL_COVER, LEVEL_MAX};
+#[cfg(feature = "embedded-graphics")]
+pub use eg::{AaTextStyle, DrawAaText};
 pub use font::{Font, FontError, MAX_KERN_LOOKUPS};
 pub use layout::{Alignment, Baseline, LineHeight, TextStyle};
 pub use one_bit::{ContrastBoost, MAX_CONTRAST_SHIFT};
 pub use outline::Glyph;
+pub use raster::{CharRange, MaskOffsets, RasterFont, RasterGlyph, RasterMetrics};
+pub use raster_text::RasterText;
+pub use rasterize::{rasterize_glyph, MaskBox, RasterizeError};
 pub use run::GlyphRun;
 pub use scale::{Scale, TextSize};
 pub use sharpen::Sharpen;
+pub use source::{GlyphSource, LineMetrics, OutlineGlyph};
 pub use text::{FontStyle, Text, TextMetrics};
 pub use ttf_parser::GlyphId;

@@ -61,9 +61,10 @@ pub struct GlyphRun<'t, 'f, 'a> {
 }
 
 impl<'t, 'f, 'a> GlyphRun<'t, 'f, 'a> {
-    /// A run of `text` (one line: a `'\n'` is drawn as the font draws it,
-    /// usually `.notdef`) from the pen position `origin` on the baseline,
-    /// with kerning, exact positions and the default flattening tolerance.
+    /// A run of `text` (one line: a `'\n'` is a character like any other)
+    /// from the pen position `origin` on the baseline, with kerning, exact
+    /// positions and the default flattening tolerance. Characters the font
+    /// lacks are left out (not drawn, no advance).
     pub fn new(font: &'f Font<'a>, text: &'t str, origin: FinePoint, scale: Scale) -> Self {
         Self {
             font,
@@ -187,9 +188,17 @@ impl Iterator for Pen<'_, '_, '_, '_> {
     type Item = (GlyphId, i64);
 
     fn next(&mut self) -> Option<Self::Item> {
-        let c = self.chars.next()?;
         let font = self.run.font;
-        let g = font.glyph(c);
+        // A character the font lacks is left out: no glyph, no advance,
+        // no kerning across it ([`Text::draw`](super::Text::draw) reports
+        // it).
+        let g = loop {
+            let c = self.chars.next()?;
+            match font.face().glyph_index(c) {
+                Some(g) => break g,
+                None => self.prev = None,
+            }
+        };
         if let (Some(p), true) = (self.prev, self.run.kerning) {
             self.x += self.run.scale.x_units(font.kerning(p, g));
         }

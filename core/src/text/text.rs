@@ -25,7 +25,9 @@
 //! `p.y`. Its outline equivalent is the baseline on the lower edge of that
 //! row: `FinePoint::from_px(p.x, p.y + 1)`.
 
+use super::cache::{CachedFont, GlyphCache};
 use super::layout::{Alignment, Baseline, TextStyle};
+use super::masked;
 use super::run::GlyphRun;
 use super::scale::{Scale, TextSize};
 use super::sharpen::{round_px, Sharpen};
@@ -67,6 +69,10 @@ pub struct FontStyle<'f, 'a, const C: usize> {
     /// default; a coarser one means fewer edges to walk: see the README's
     /// text benchmark).
     pub tolerance: Tolerance,
+    /// A cache of rasterized glyphs (none by default): with one, each
+    /// glyph is rasterized once and drawn from its mask in every band and
+    /// frame (see [`with_cache`](Self::with_cache)).
+    pub cache: Option<&'f GlyphCache<'f>>,
 }
 
 impl<'f, 'a, const C: usize> FontStyle<'f, 'a, C> {
@@ -83,7 +89,40 @@ impl<'f, 'a, const C: usize> FontStyle<'f, 'a, C> {
             kerning: true,
             sharpen: Sharpen::NONE,
             tolerance: Tolerance::DEFAULT,
+            cache: None,
         }
+    }
+
+    /// Drawn through a glyph cache: each glyph rasterized once (its
+    /// exact-area coverage, quantized to 1/29, at its pen position
+    /// rounded to a quarter pixel and its baseline to a whole pixel: see
+    /// [`CachedFont`]) and decoded from the cache in every band and frame
+    /// after, instead of parsed, flattened and walked in each. Give each
+    /// size its own cache.
+    ///
+    /// ```
+    /// use softedge::canvas::Canvas;
+    /// use softedge::geom::FinePoint;
+    /// use softedge::text::{Font, FontStyle, GlyphCache, Text, SLOT_WORDS};
+    /// use softedge::{Band, BandBuffer};
+    ///
+    /// let font = Font::bundled().unwrap();
+    /// let (mut codes, mut slots, mut scratch) = ([0u8; 1024], [0u32; 16 * SLOT_WORDS], [0i32; 512]);
+    /// let cache = GlyphCache::new(&mut codes, &mut slots, &mut scratch);
+    /// let style = FontStyle::<1>::new(&font, 12, [4095]).with_cache(&cache);
+    /// let text = Text::new("1.5 V", FinePoint::from_px(2, 14), style);
+    /// for y0 in [0, 8] {
+    ///     let (mut acc, mut cover) = ([0i32; 64 * 8], [0i32; BandBuffer::<1>::cover_len(64, 8)]);
+    ///     let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, Band::new(64, y0, 8)).unwrap();
+    ///     buf.clear([0]);
+    ///     text.draw(&mut Canvas::new(&mut buf, None)).unwrap();
+    /// }
+    /// // Two bands, four glyphs with ink and a space: each rasterized once.
+    /// assert_eq!(cache.stats().misses, 5);
+    /// ```
+    pub fn with_cache(mut self, cache: &'f GlyphCache<'f>) -> Self {
+        self.cache = Some(cache);
+        self
     }
 
     /// With a flattening tolerance for the glyphs' curves.
@@ -308,8 +347,40 @@ impl<'t, 'f, 'a, const C: usize> Text<'t, 'f, 'a, C> {
     /// Draws every line into the canvas (each line one shape, in the
     /// style's colour and opacity, composed over what is there) and gives
     /// the pen position after the last glyph.
+    ///
+    /// A character the font lacks is not drawn (no `.notdef` box, no
+    /// advance): the rest is drawn and [`DrawError::MissingGlyph`] names
+    /// the first one.
+    ///
+    /// With a [cache](FontStyle::with_cache), the lines are drawn from
+    /// the glyphs' masks as one shape (see [`CachedFont`]); a glyph the
+    /// cache cannot keep is walked from its outline into the same shape.
     pub fn draw<Col>(&self, canvas: &mut Canvas<'_, '_, C, Col>) -> Result<FinePoint, DrawError> {
+        if let Some(cache) = self.style.cache {
+            let source = CachedFont::with_scale(self.style.font, self.style.scale(), cache)
+                .with_tolerance(self.style.tolerance)
+                .with_kerning(self.style.kerning);
+            let lines = self.lines().map(|run| {
+                let o = run.origin();
+                masked::Line {
+                    text: run.text(),
+                    x: i64::from(o.x),
+                    y: i64::from(o.y),
+                }
+            });
+            masked::draw_lines(
+                canvas,
+                &source,
+                lines,
+                self.style.color,
+                self.style.opacity,
+                self.style.sharpen.glyph_x,
+                0,
+            )?;
+            return Ok(self.end());
+        }
         let mut last = None;
+        let mut missing = None;
         for run in self.lines() {
             canvas.fill(
                 &run,
@@ -318,10 +389,23 @@ impl<'t, 'f, 'a, const C: usize> Text<'t, 'f, 'a, C> {
                 Blend::Over,
                 self.style.opacity,
             )?;
+            if missing.is_none() {
+                missing = self.style.font.missing(run.text()).next();
+            }
             last = Some(run);
+        }
+        if let Some(c) = missing {
+            return Err(DrawError::MissingGlyph(c));
         }
         // One more pass over the last line only (the pen's end).
         Ok(last.map_or(self.position, |run| pen_end(&run)))
+    }
+
+    /// The pen after the last glyph of the last line.
+    fn end(&self) -> FinePoint {
+        self.lines()
+            .last()
+            .map_or(self.position, |run| pen_end(&run))
     }
 
     /// The layout without drawing: widths, boxes, next position.

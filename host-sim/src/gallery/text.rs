@@ -1,9 +1,12 @@
 //! Images 13 and 14: text in an outline font (`softedge::text`, the bundled
 //! Softedge Sans Subset) next to embedded-graphics' mono bitmap fonts.
 //!
-//! - 13: 8 to 48 px on an RGB TFT (linear light, shown in sRGB), and the
+//! - 13: 8 to 48 px on an RGB TFT (linear light, shown in sRGB), the
 //!   same lines in e-g's `FONT_4X6` .. `FONT_10X20`, drawn by e-g itself
-//!   into an RGB image (a `DrawTarget` here).
+//!   into an RGB image (a `DrawTarget` here), and e-g's `Text` with
+//!   softedge's `AaTextStyle` in place of `MonoTextStyle`: the bundled font
+//!   rasterized ahead of time at 12 and 16 px, and through a glyph cache
+//!   at 20, 24 and 32 px.
 //! - 14: four lines of an instrument display on a 128x64 1-bit OLED at 10,
 //!   11 and 12 px through the frame loop (8-row pages): the anti-aliased
 //!   gray frame, its threshold at 1/2, Bayer 8x8, Floyd–Steinberg, and
@@ -17,6 +20,7 @@ use embedded_graphics::prelude::{DrawTarget, OriginDimensions, Point, Size};
 use embedded_graphics::text::Text as EgText;
 use embedded_graphics::{Drawable, Pixel};
 use softedge::canvas::{Canvas, WalkSlot};
+use softedge::color::IntoLinear;
 use softedge::geom::FinePoint;
 use softedge::render::Renderer;
 use softedge::text::{Baseline, ContrastBoost, Font, FontStyle, Sharpen, Text, TextStyle};
@@ -238,6 +242,85 @@ fn oled_gray(t: &Text<'_, '_, '_, 1>) -> Result<LinImage<1>, GalleryError> {
     Ok(img)
 }
 
+/// The e-g panel's lines again, with embedded-graphics' `Text` and
+/// softedge's `AaTextStyle`: the bundled font rasterized ahead of time at
+/// 12 and 16 px (`text::bundled::SANS_12`, `SANS_16`), and as an outline
+/// font at 20, 24 and 32 px through a glyph cache, band by band.
+fn eg_aa(font: &Font<'_>, band_rows: u16) -> Result<LinImage<3>, GalleryError> {
+    use embedded_graphics::text::renderer::TextRenderer;
+    use embedded_graphics::text::Baseline as EgBaseline;
+    use softedge::prelude::DrawAaText;
+    use softedge::text::{bundled, AaTextStyle, CachedFont, GlyphCache, TextSize, SLOT_WORDS};
+    let (w, h) = TFT;
+    let bg = Rgb888::new(16, 32, 48);
+    let rows = band_rows.max(1);
+    let mut acc = vec![0i32; BandBuffer::<3>::acc_len(w, rows)];
+    let mut cover = vec![0i32; BandBuffer::<3>::cover_len(w, rows)];
+    let mut img = LinImage::<3>::new(u32::from(w), u32::from(h));
+    let mut row = vec![[0u16; 3]; usize::from(w)];
+    // One cache a size (a cache serves one size at a time).
+    let mut store: Vec<(Vec<u8>, Vec<u32>, Vec<i32>)> = (0..3)
+        .map(|_| {
+            (
+                vec![0u8; 8192],
+                vec![0u32; 128 * SLOT_WORDS],
+                vec![0i32; 4096],
+            )
+        })
+        .collect();
+    let caches: Vec<GlyphCache<'_>> = store
+        .iter_mut()
+        .map(|(a, b, c)| GlyphCache::new(a, b, c))
+        .collect();
+    let colors = [
+        Rgb888::WHITE,
+        Rgb888::new(255, 225, 110),
+        Rgb888::new(150, 235, 255),
+    ];
+    for band in Bands::new(w, h, rows) {
+        let mut buf = BandBuffer::<3>::new(&mut acc, &mut cover, band).map_err(setup_err)?;
+        buf.clear(bg.into_linear());
+        let mut canvas: Canvas<'_, '_, 3, Rgb888> = Canvas::typed(&mut buf, None);
+        let mut y = 4;
+        for (k, (line, font16)) in [
+            ("12 px, flash: Quick brown fox 0123 °C", &bundled::SANS_12),
+            ("16 px, flash: Quick fox 0123 °C", &bundled::SANS_16),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let style = AaTextStyle::new(font16, colors[k % 3]);
+            EgText::with_baseline(line, Point::new(4, y), style, EgBaseline::Top)
+                .draw(&mut canvas)
+                .map_err(draw_err)?;
+            y += style.line_height() as i32 + 6;
+        }
+        for (k, ((size, line), cache)) in [
+            (20u16, "20 px, cache: Quick fox"),
+            (24, "24 px, cache: AVA 0.5"),
+            (32, "32 px cache ±0.5"),
+        ]
+        .into_iter()
+        .zip(&caches)
+        .enumerate()
+        {
+            let style = AaTextStyle::new(
+                CachedFont::new(font, TextSize::px(size), cache),
+                colors[(k + 2) % 3],
+            );
+            EgText::with_baseline(line, Point::new(4, y), style, EgBaseline::Top)
+                .draw(&mut canvas)
+                .map_err(draw_err)?;
+            y += style.line_height() as i32 + 6;
+        }
+        for yy in band.y0..band.y0 + i32::from(band.rows) {
+            let n = buf.resolve_row(yy, &mut row);
+            img.set_row(yy as u32, &row[..n]);
+        }
+    }
+    Ok(img)
+}
+
 /// Image 13.
 pub(super) fn sizes_sheet(band_rows: u16, scale: u32) -> Result<Image8, GalleryError> {
     let font = Font::bundled().map_err(|e| GalleryError::Geometry {
@@ -246,12 +329,14 @@ pub(super) fn sizes_sheet(band_rows: u16, scale: u32) -> Result<Image8, GalleryE
         detail: e.to_string(),
     })?;
     let ours = tft(&font, band_rows)?.to_srgb8();
+    let aa = eg_aa(&font, band_rows)?.to_srgb8();
     let s = (scale / 2).max(1);
     Ok(compose(
         "TEXT: SOFTEDGE SANS 8-48 PX (AA, LINEAR LIGHT) VS E-G MONO FONTS",
         &[vec![
             Panel::new("SOFTEDGE OUTLINES 8-48 PX", ours, s),
             Panel::new("E-G MONO FONTS 4X6-10X20", eg_mono(), s),
+            Panel::new("E-G TEXT, SOFTEDGE AATEXTSTYLE", aa, s),
         ]],
     ))
 }
