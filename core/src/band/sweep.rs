@@ -238,13 +238,12 @@ impl<const C: usize> BandBuffer<'_, C> {
                 continue;
             };
             let x = x0.saturating_add(lo as i32);
-            let mut pixels = RowPixels {
-                acc: &mut *row.acc,
-                tags: &mut *row.tags,
-                dense,
-            };
+            let mut pixels = RowPixels { acc: &mut *row.acc };
             let (first, last) = sweep_row(op, changes, &mut pixels, lo, w, (x, y), &factor);
             if first < last {
+                if !dense {
+                    tags::fill(row.tags, lo + first, lo + last, MIXED);
+                }
                 row.mark(lo + first, lo + last);
             }
         }
@@ -439,22 +438,19 @@ fn blend_over<const C: usize>(p: &mut [i32; C], f: &[i32; C], k: i32) {
 pub(super) const WHOLE: i32 = i32::MAX;
 pub(super) const SKIP: i32 = i32::MIN;
 
-/// A band row's pixels as a sweep composes them: the accumulator and tags
-/// of the whole row; `dense`: the band keeps no tags (see [`Palette`]).
+/// A band row's pixels as a sweep composes them: the accumulator of the
+/// whole row. Their tags are set `MIXED` by the sweep's caller over the
+/// drawn extent [`sweep_row`] returns, once a row (a pixel of that extent
+/// left unchanged is `MIXED` too, which only sends it resolved: the
+/// accumulator is the value; see `band::tags`).
 pub(super) struct RowPixels<'r, const C: usize> {
     pub(super) acc: &'r mut [i32],
-    pub(super) tags: &'r mut [i32],
-    pub(super) dense: bool,
 }
 
 impl<const C: usize> RowPixels<'_, C> {
-    /// The accumulator of pixels `c0..c1`, to be changed: their tags set
-    /// `MIXED` (see `band::tags`).
+    /// The accumulator of pixels `c0..c1`, to be changed.
     #[inline]
     pub(super) fn take(&mut self, c0: usize, c1: usize) -> &mut [i32] {
-        if !self.dense {
-            tags::fill(self.tags, c0, c1, MIXED);
-        }
         self.acc.get_mut(c0 * C..c1 * C).unwrap_or_default()
     }
 }
