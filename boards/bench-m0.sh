@@ -87,6 +87,9 @@ $1 == "image" {
     if (!($2 in iseen)) { iseen[$2] = 1; iorder[++ni] = $2 }
     image[$2] = $3; iarea[$2] = $4
 }
+$1 == "dial_ram" {
+    nram++; rslots[nram] = $2; rslotb[nram] = $3; rband[nram] = $4; rdma[nram] = $5; rstack[nram] = $6; rinsns[nram] = $7
+}
 $1 == "panel_shape_cache" { pcache_entries = $2; pcache_segments = $3 }
 $1 == "panel" {
     if (!($2 in pseen)) { pseen[$2] = 1; porder[++np] = $2 }
@@ -239,6 +242,17 @@ END {
             w = wh[k]
             printf "| %s | %s | %s | %s | %s | %s |\n", (r in rlabel ? rlabel[r] : r), wlabel[w], \
                 group(redraw[r, w]), group(windows[r, w]), group(pixels[r, w]), group(bytes[r, w])
+        }
+    }
+    if (nram > 0) {
+        printf "\nRAM of the dial scene'"'"'s whole frame on the plain path (`Renderer::render`, 16-row bands), by walk-cache slots: "
+        printf "band buffers (accumulator, cover scratch and tags), the walk cache, the one-band Rgb565 DMA buffer the firmware streams, "
+        printf "and the stack the frame needs below its caller, bytes (issue 32'"'"'s goal: 32 KiB in all, 32,768):\n\n"
+        printf "| walk-cache slots | band buffers | walk cache | DMA band | stack of the frame | total | instructions |\n"
+        printf "| ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n"
+        for (i = 1; i <= nram; i++) {
+            printf "| %s | %s | %s | %s | %s | %s | %s |\n", rslots[i], group(rband[i]), group(rslotb[i]), group(rdma[i]), \
+                group(rstack[i]), group(rband[i] + rslotb[i] + rdma[i] + rstack[i]), group(rinsns[i])
         }
     }
     printf "\nThe RP2040 firmware'"'"'s panel (boards/rp2040-st7789/src/ui.rs: dial, ticks, needle, arc gauge with round caps, readout, button), "

@@ -103,8 +103,26 @@ pub fn report(width: u16, height: u16, channels: usize, rows: &[u16], triangles:
          a triangle, {} for {triangles} (a frame's triangles recorded once, drawn in every band)\n",
         listed * triangles
     );
+    let dma = if channels == 1 { 1 } else { 2 };
+    out += &format!(
+        "a firmware that streams each band to its display by DMA adds one band of display codes: \
+         {} bytes a row ({dma} a pixel; {} at {} rows)\n",
+        usize::from(width) * dma,
+        usize::from(width) * dma * usize::from(rows.first().copied().unwrap_or(1)),
+        rows.first().copied().unwrap_or(1),
+    );
+    out += &format!(
+        "stack: the dial scene's frame (boards/bench-m0, Cortex-M0, 240x240 Rgb565, 16-row bands) \
+         needs {DIAL_FRAME_STACK} bytes below its caller (`dial_ram` lines of bash boards/bench-m0.sh); \
+         its whole frame then needs, with no walk cache, {} bytes in all\n",
+        band_memory(240, 3, 16).plain() + 240 * 16 * 2 + DIAL_FRAME_STACK
+    );
     out
 }
+
+/// The stack of the dial scene's whole frame below its caller, measured on
+/// the Cortex-M0 (QEMU, `bash boards/bench-m0.sh`, its `dial_ram` lines).
+pub const DIAL_FRAME_STACK: usize = 8_680;
 
 #[cfg(test)]
 mod tests {

@@ -19,6 +19,7 @@
 //! redraw <renderer> <full|window> <instructions> <windows> <pixels> <SPI bytes>
 //! panel <band rows> <band buffer bytes> <whole|partial> <instructions>
 //! image <none|copy64|rotated30|icon48> <instructions> <image pixels>
+//! dial_ram <slots> <slot bytes> <band buffer bytes> <DMA band bytes> <the frame's stack bytes> <instructions>
 //! stack_bytes <n>
 //! done
 //! ```
@@ -243,9 +244,7 @@ fn main() -> ! {
     // Images (issue 35): each alone on the frame, and the frame without
     // it, softedge in 16-row bands.
     for image in images::Image::ALL {
-        bench.image(image, || {
-            images::softedge_image(image, &mut bufs).is_ok()
-        });
+        bench.image(image, || images::softedge_image(image, &mut bufs).is_ok());
     }
 
     // The RP2040 firmware's panel (issue 14: its band height): a whole
@@ -435,9 +434,52 @@ fn main() -> ! {
         );
     }
 
+    // The dial's RAM (issue 32): the plain path's whole frame by walk-cache
+    // slots, with the deepest stack its frame reaches (the stack painted
+    // again just before it; the run's own high-water mark is kept).
+    let high_water = fw::stack::used_bytes();
+    let mut dial_stack = 0;
+    for slots in DIAL_SLOTS {
+        let n = slots.min(bufs.slots3.len());
+        let mut b = Buffers {
+            acc: &mut *bufs.acc,
+            cover: &mut *bufs.cover,
+            out16: &mut *bufs.out16,
+            out8: &mut *bufs.out8,
+            slots3: bufs.slots3.get_mut(..n).unwrap_or_default(),
+            slots1: &mut *bufs.slots1,
+            list3: &mut *bufs.list3,
+        };
+        fw::stack::paint();
+        let here = fw::stack::depth_here();
+        let measured = bench.measure("dial_ram", "full", 0, 0, ui::BAND_ROWS, || {
+            ui::softedge_scene_stream(None, &mut b).is_ok()
+        });
+        let used = fw::stack::used_bytes();
+        dial_stack = dial_stack.max(used);
+        // The frame's own stack, below the benchmark's frame (whose
+        // buffers a firmware keeps elsewhere).
+        let stack = used.saturating_sub(here);
+        if let Some((insns, ok)) = measured {
+            Bench::tag(ok, "dial_ram ")
+                .dec(n as u64)
+                .text(" ")
+                .dec((n * WalkSlot::<3>::SIZE) as u64)
+                .text(" ")
+                .dec(band_bytes(ui::BAND_ROWS))
+                .text(" ")
+                .dec((usize::from(FRAME_ROWS) * usize::from(ui::BAND_ROWS) * 2) as u64)
+                .text(" ")
+                .dec(stack as u64)
+                .text(" ")
+                .dec(insns)
+                .print();
+        }
+    }
+
     Line::new()
         .text("stack_bytes ")
-        .dec(fw::stack::used_bytes() as u64)
+        .dec(high_water.max(dial_stack).max(fw::stack::used_bytes()) as u64)
         .print();
     let margin_ok = fw::stack::margin_bytes() >= fw::stack::MIN_MARGIN_BYTES;
     if !margin_ok {
@@ -464,6 +506,10 @@ fn band_bytes(rows: u16) -> u64 {
     let n = BandBuffer::<3>::acc_len(w, rows) + BandBuffer::<3>::cover_len(w, rows);
     (n * core::mem::size_of::<i32>()) as u64
 }
+
+/// Walk-cache slots the dial's RAM is measured with (the last: all the
+/// benchmark has, as its other dial rows use).
+const DIAL_SLOTS: [usize; 5] = [0, 16, 32, 64, SLOTS];
 
 /// The frame without triangles (the fixed cost), as a workload name.
 static EMPTY: Workload = Workload {
@@ -570,8 +616,7 @@ impl Bench<'_> {
     /// Measures a frame of one of the [`images`] cases and prints
     /// `image <case> <n> <image pixels>`.
     fn image(&mut self, image: images::Image, frame: impl FnOnce() -> bool) {
-        let Some((insns, ok)) =
-            self.measure("image", image.name(), 0, 0, images::BAND_ROWS, frame)
+        let Some((insns, ok)) = self.measure("image", image.name(), 0, 0, images::BAND_ROWS, frame)
         else {
             return;
         };

@@ -64,3 +64,12 @@ pub fn used_bytes() -> usize {
     }
     top as usize - p as usize
 }
+
+/// Bytes of stack in use at the caller (from the top of RAM to the
+/// current stack pointer): subtracted from [`used_bytes`] after a call, it
+/// leaves what the call itself needed below its caller's frame.
+#[inline(never)]
+pub fn depth_here() -> usize {
+    let (_, top) = bounds();
+    (top as usize).saturating_sub(cortex_m::register::msp::read() as usize)
+}
