@@ -101,6 +101,7 @@ $1 == "insns" {
     if (w == "empty") fixed[r] = $6
     else if (w == "screen") { screen[r, rows] = $6; if (rows == 16 || rows == 240) screen16[r] = $6 }
     else if (w == "slanted") slanted[r, rows] = $6
+    else if (w == "wscreen") { wscreen[r, rows] = $6; wseen[r] = 1 }
     else if (n == 1) one[r, w] = $6
     else all[r, w] = $6
 }
@@ -150,6 +151,25 @@ END {
         r = order[i]
         if (!((r, 16) in slanted)) continue
         printf "| %s | %s | %s | %.3fx |\n", (r in label ? label[r] : r), mega(slanted[r, 16]), mega(slanted[r, 3]), slanted[r, 3] / slanted[r, 16]
+    }
+    split("wsmall wmedium wlarge", wcls, " ")
+    printf "\nWell-shaped random triangles (issue 32: no angle below 40°, random size, rotation and 1/16-px position; embedded-graphics draws them rounded to whole pixels), "
+    printf "per px as above, and 132 of the medium ones (overlapping at random) in 16- and 3-row bands:\n\n"
+    printf "| renderer "
+    for (k = 1; k <= 3; k++) printf "| per px, %s (%.1f px) ", wcls[k], area2[wcls[k]] / 2 / tris[wcls[k]]
+    printf "| 132 medium, 16-row bands | 3-row bands | 3 rows / 16 rows |\n"
+    printf "| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n"
+    for (i = 1; i <= nr; i++) {
+        r = order[i]
+        if (!(r in wseen)) continue
+        printf "| %s ", (r in label ? label[r] : r)
+        for (k = 1; k <= 3; k++) {
+            w = wcls[k]
+            if ((r, w) in all) printf "| %s ", perpx((all[r, w] - one[r, w]) / (marginal2[w] / 2))
+            else printf "| — "
+        }
+        if ((r, 3) in wscreen) printf "| %s | %s | %.3fx |\n", mega(wscreen[r, 16]), mega(wscreen[r, 3]), wscreen[r, 3] / wscreen[r, 16]
+        else printf "| %s | — | — |\n", mega((r, 16) in wscreen ? wscreen[r, 16] : wscreen[r, 240])
     }
     printf "\nWhat the walk cache buys: the screen, softedge AA flat RGB, drawn directly and from a `TriangleList`, by walk-cache slots (caller-provided, `WalkSlot::<3>::SIZE` bytes each), "
     printf "and the RAM of the 3-row frame (band buffers, %s bytes, + cache; the list is 60 bytes a triangle more):\n\n", group(b3)

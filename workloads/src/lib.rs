@@ -12,12 +12,17 @@
 //!   grid of cells each split along its diagonal into two triangles of
 //!   about 436 px².
 //!
-//! Every vertex is a whole pixel, so embedded-graphics (integer `Point`s)
-//! can draw the same triangles as softedge (`SubPoint::from_px`). The two
-//! read a vertex differently: softedge's `(x, y)` is the top-left *corner*
-//! of pixel `(x, y)`, embedded-graphics' is the pixel itself (its centre);
-//! the areas below are the exact areas of the triangles with corner
-//! vertices, `|cross| / 2` in px².
+//! - [`WELL_SMALL`], [`WELL_MEDIUM`], [`WELL_LARGE`]: [`COUNT`]
+//!   well-shaped random triangles each (random size, rotation and 1/16-px
+//!   position, no angle below 40°), mean areas about 27, 437 and 3 900 px².
+//!
+//! Vertices are on a 1/16-px grid ([`Tri`]); those of every workload but
+//! the well-shaped ones are whole pixels, so embedded-graphics (integer
+//! `Point`s) draws the same triangles as softedge; the well-shaped ones it
+//! draws rounded to whole pixels ([`Tri::px`]). Both put a whole-pixel
+//! vertex `(x, y)` at the centre of pixel `(x, y)`
+//! (`FinePoint::centre_of`); the areas below are the exact areas,
+//! `|cross| / 2`.
 //!
 //! ## How a random triangle is made
 //!
@@ -82,12 +87,14 @@ pub const SCREEN_ROWS: u16 = 6;
 /// differ by their `initstate` seed.
 const STREAM: u64 = 0x5eed;
 
-/// One triangle: whole-pixel vertices and a linear 12-bit RGB colour per
-/// vertex. Flat renderers use [`flat_rgb`](Self::flat_rgb) (vertex 0's
+/// One triangle: vertices on a 1/16-px grid and a linear 12-bit RGB colour
+/// per vertex. Flat renderers use [`flat_rgb`](Self::flat_rgb) (vertex 0's
 /// colour), gray ones [`gray`](Self::gray).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Tri {
-    /// Vertices `[x, y]` in whole pixels, `0..=FRAME`.
+    /// Vertices `[x, y]` in 1/16 px, `0..=16 FRAME` (`16 x` is pixel `x`:
+    /// whole pixels for every workload but the well-shaped ones;
+    /// [`px`](Self::px) gives them rounded).
     pub v: [[i16; 2]; 3],
     /// Linear 12-bit colour `[r, g, b]` of each vertex, `0..=4095`.
     pub rgb: [[u16; 3]; 3],
@@ -99,12 +106,33 @@ impl Tri {
         rgb: [[0; 3]; 3],
     };
 
-    /// Twice the exact area in px² (`|cross product|` of two edges).
-    pub const fn twice_area(&self) -> u32 {
+    /// Twice the exact area in 1/256 px² (`|cross product|` of two edges,
+    /// in 1/16 px).
+    pub const fn twice_area_256(&self) -> u32 {
         let [[x0, y0], [x1, y1], [x2, y2]] = self.v;
         let (x0, y0) = (x0 as i32, y0 as i32);
         let cross = (x1 as i32 - x0) * (y2 as i32 - y0) - (x2 as i32 - x0) * (y1 as i32 - y0);
         cross.unsigned_abs()
+    }
+
+    /// Twice the area in px², rounded (exact for whole-pixel vertices).
+    pub const fn twice_area(&self) -> u32 {
+        (self.twice_area_256() + 128) / 256
+    }
+
+    /// The vertices rounded to whole pixels (what embedded-graphics, whose
+    /// `Point`s are whole pixels, draws).
+    pub const fn px(&self) -> [[i32; 2]; 3] {
+        let mut out = [[0; 2]; 3];
+        let mut i = 0;
+        while i < 3 {
+            out[i] = [
+                (self.v[i][0] as i32 + 8) >> 4,
+                (self.v[i][1] as i32 + 8) >> 4,
+            ];
+            i += 1;
+        }
+        out
     }
 
     /// The colour of a flat-shaded triangle: vertex 0's.
@@ -154,15 +182,16 @@ impl Workload {
     }
 }
 
-/// Twice the summed exact area of `tris`, px².
+/// Twice the summed exact area of `tris`, px², rounded (exact for
+/// whole-pixel vertices).
 pub const fn twice_area_sum(tris: &[Tri]) -> u64 {
     let mut sum = 0u64;
     let mut k = 0;
     while k < tris.len() {
-        sum += tris[k].twice_area() as u64;
+        sum += tris[k].twice_area_256() as u64;
         k += 1;
     }
-    sum
+    (sum + 128) / 256
 }
 
 /// `n` random triangles with vertices in boxes of side `side` (see the
@@ -181,7 +210,7 @@ const fn random_triangles<const N: usize>(seed: u64, side: u16) -> [Tri; N] {
         while i < 3 {
             let x = x0 + rng.below(side as u32 + 1) as i16;
             let y = y0 + rng.below(side as u32 + 1) as i16;
-            t.v[i] = [x, y];
+            t.v[i] = [16 * x, 16 * y];
             i += 1;
         }
         if t.twice_area() == 0 {
@@ -203,6 +232,11 @@ const fn random_colors(rng: &mut Pcg32) -> [[u16; 3]; 3] {
         i += 1;
     }
     rgb
+}
+
+/// Whole pixel `(x, y)` on the 1/16-px grid of [`Tri`].
+const fn px(x: i16, y: i16) -> [i16; 2] {
+    [16 * x, 16 * y]
 }
 
 /// Triangles of [`SCREEN`].
@@ -230,17 +264,110 @@ const fn screen_triangles(seed: u64, slant: i16) -> [Tri; SCREEN_LEN] {
             let x1 = ((2 * (i + 1) * frame + cols) / (2 * cols)) as i16;
             let (b0, b1) = (x0 + slant, x1 + slant);
             out[k] = Tri {
-                v: [[x0, y0], [x1, y0], [b1, y1]],
+                v: [px(x0, y0), px(x1, y0), px(b1, y1)],
                 rgb: random_colors(&mut rng),
             };
             out[k + 1] = Tri {
-                v: [[x0, y0], [b1, y1], [b0, y1]],
+                v: [px(x0, y0), px(b1, y1), px(b0, y1)],
                 rgb: random_colors(&mut rng),
             };
             k += 2;
             i += 1;
         }
         j += 1;
+    }
+    out
+}
+
+/// `sin` of `x` radians, `|x| <= 2 pi` (Taylor series around the nearest
+/// multiple of pi/2: error below 1e-12 there; compile time only).
+const fn sin(x: f64) -> f64 {
+    const PI: f64 = core::f64::consts::PI;
+    // Reduce to [-pi, pi], then to [-pi/2, pi/2] by sin(pi - x) = sin(x).
+    let mut x = x;
+    while x > PI {
+        x -= 2.0 * PI;
+    }
+    while x < -PI {
+        x += 2.0 * PI;
+    }
+    if x > PI / 2.0 {
+        x = PI - x;
+    } else if x < -PI / 2.0 {
+        x = -PI - x;
+    }
+    let (mut term, mut sum, mut n) = (x, x, 1.0);
+    while n < 40.0 {
+        term = -term * x * x / ((n + 1.0) * (n + 2.0));
+        sum += term;
+        n += 2.0;
+    }
+    sum
+}
+
+/// `sqrt(a)`, `a >= 0` (Newton's iteration; compile time only).
+const fn sqrt(a: f64) -> f64 {
+    if a <= 0.0 {
+        return 0.0;
+    }
+    let mut x = if a > 1.0 { a } else { 1.0 };
+    let mut k = 0;
+    while k < 64 {
+        x = 0.5 * (x + a / x);
+        k += 1;
+    }
+    x
+}
+
+/// `x` rounded to the nearest integer, halves away from zero.
+const fn round(x: f64) -> i32 {
+    if x >= 0.0 {
+        (x + 0.5) as i32
+    } else {
+        (x - 0.5) as i32
+    }
+}
+
+/// `n` well-shaped random triangles of mean area about `area` px² (see the
+/// crate docs): each inscribed in a circle of random centre (1/16 px) and
+/// radius, its vertices `120° ± 20°` apart from a random rotation, so no
+/// angle is below 40°; from the stream seeded `seed`.
+const fn well_shaped_triangles<const N: usize>(seed: u64, area: u32) -> [Tri; N] {
+    const DEG: f64 = core::f64::consts::PI / 180.0;
+    let mut rng = Pcg32::new(seed, STREAM);
+    let mut out = [Tri::ZERO; N];
+    let mut k = 0;
+    while k < N {
+        // The area uniform in [area / 2, 3 area / 2]; a triangle inscribed
+        // in radius r with central angles near 120° has about 3 sqrt(3) /
+        // 4 r² (the equilateral's; within 6 % for these angles).
+        let a = area as f64 * (0.5 + rng.below(1001) as f64 / 1000.0);
+        let r = sqrt(a / 1.299_038_105_676_658);
+        let r16 = 16.0 * r;
+        // The centre at least r + 1 px from the frame's edges.
+        let margin = 16 * (r as i32 + 2);
+        let span = (16 * FRAME as i32 - 2 * margin) as u32;
+        let cx = margin + rng.below(span) as i32;
+        let cy = margin + rng.below(span) as i32;
+        let theta = rng.below(360 * 16) as f64 / 16.0;
+        let j1 = rng.below(41) as f64 - 20.0;
+        let j2 = rng.below(41) as f64 - 20.0;
+        let angles = [theta, theta + 120.0 + j1, theta + 240.0 + j2];
+        let mut t = Tri::ZERO;
+        let mut i = 0;
+        while i < 3 {
+            let phi = angles[i] * DEG;
+            let x = cx + round(r16 * sin(phi + 90.0 * DEG));
+            let y = cy + round(r16 * sin(phi));
+            t.v[i] = [x as i16, y as i16];
+            i += 1;
+        }
+        if t.twice_area_256() == 0 {
+            continue;
+        }
+        t.rgb = random_colors(&mut rng);
+        out[k] = t;
+        k += 1;
     }
     out
 }
@@ -288,6 +415,32 @@ pub static SLANTED: Workload = Workload {
 /// The three random workloads, small to large.
 pub static CLASSES: [&Workload; 3] = [&SMALL, &MEDIUM, &LARGE];
 
+static WELL_SMALL_TRIS: [Tri; COUNT] = well_shaped_triangles(2700, 27);
+static WELL_MEDIUM_TRIS: [Tri; COUNT] = well_shaped_triangles(43700, 437);
+static WELL_LARGE_TRIS: [Tri; COUNT] = well_shaped_triangles(390000, 3900);
+
+/// [`COUNT`] well-shaped random triangles (no angle below 40°, random size,
+/// rotation and 1/16-px position) of mean area about 27 px².
+pub static WELL_SMALL: Workload = Workload {
+    name: "wsmall",
+    tris: &WELL_SMALL_TRIS,
+};
+/// As [`WELL_SMALL`], about 437 px².
+pub static WELL_MEDIUM: Workload = Workload {
+    name: "wmedium",
+    tris: &WELL_MEDIUM_TRIS,
+};
+/// As [`WELL_SMALL`], about 3 900 px².
+pub static WELL_LARGE: Workload = Workload {
+    name: "wlarge",
+    tris: &WELL_LARGE_TRIS,
+};
+
+/// The three well-shaped workloads, small to large: the shapes a mesh or a
+/// user interface has, beside [`CLASSES`]' uniform vertices (about a
+/// third of them slivers).
+pub static WELL_CLASSES: [&Workload; 3] = [&WELL_SMALL, &WELL_MEDIUM, &WELL_LARGE];
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -315,7 +468,10 @@ mod tests {
         assert_eq!(SMALL.twice_area(), 113_965);
         assert_eq!(MEDIUM.twice_area(), 1_739_248);
         assert_eq!(LARGE.twice_area(), 15_259_116);
-        assert_eq!(SMALL.tris[0].v, [[185, 13], [183, 13], [180, 10]]);
+        assert_eq!(
+            SMALL.tris[0].v,
+            [[185, 13], [183, 13], [180, 10]].map(|[x, y]| [16 * x, 16 * y])
+        );
         assert_eq!(
             SMALL.tris[0].rgb,
             [[257, 1133, 405], [823, 325, 1007], [476, 3924, 2304]]
@@ -327,9 +483,12 @@ mod tests {
         for w in CLASSES {
             for t in w.tris {
                 assert!(t.twice_area() > 0);
-                for [x, y] in t.v {
-                    assert!((0..FRAME as i16).contains(&x) && (0..FRAME as i16).contains(&y));
+                for [x, y] in t.px() {
+                    assert!(
+                        (0..i32::from(FRAME)).contains(&x) && (0..i32::from(FRAME)).contains(&y)
+                    );
                 }
+                assert!(t.v.iter().flatten().all(|&c| c % 16 == 0));
                 assert!(t.rgb.iter().flatten().all(|&c| c <= 4095));
             }
         }
@@ -349,7 +508,9 @@ mod tests {
     /// Is the pixel centre `(x + 1/2, y + 1/2)` strictly inside `t`?
     /// (Exact, in doubled coordinates.)
     fn centre_inside(t: &Tri, x: i32, y: i32) -> bool {
-        let (px, py) = (2 * x + 1, 2 * y + 1);
+        // In 1/32 px: the centre of the pixel whose top-left corner is
+        // whole-pixel vertex (x, y).
+        let (px, py) = (32 * x + 16, 32 * y + 16);
         let p = t.v.map(|[vx, vy]| (2 * i32::from(vx), 2 * i32::from(vy)));
         let side = |a: (i32, i32), b: (i32, i32)| {
             (i64::from(b.0 - a.0) * i64::from(py - a.1)
@@ -400,6 +561,53 @@ mod tests {
             for x in 0..frame {
                 assert!(centre_hits(&SLANTED, x, y) <= 1, "pixel ({x}, {y})");
             }
+        }
+    }
+
+    /// The smallest angle of `t`, degrees (`f64` from its vertices).
+    fn min_angle(t: &Tri) -> f64 {
+        let p = t.v.map(|[x, y]| (f64::from(x), f64::from(y)));
+        (0..3)
+            .map(|i| {
+                let (a, b, c) = (p[i], p[(i + 1) % 3], p[(i + 2) % 3]);
+                let (u, v) = ((b.0 - a.0, b.1 - a.1), (c.0 - a.0, c.1 - a.1));
+                let cos = (u.0 * v.0 + u.1 * v.1) / (u.0.hypot(u.1) * v.0.hypot(v.1));
+                cos.clamp(-1.0, 1.0).acos().to_degrees()
+            })
+            .fold(180.0, f64::min)
+    }
+
+    #[test]
+    fn well_shaped_triangles_are_well_shaped_and_of_their_classes() {
+        for (w, target) in [
+            (&WELL_SMALL, 27.0),
+            (&WELL_MEDIUM, 437.0),
+            (&WELL_LARGE, 3900.0),
+        ] {
+            assert_eq!(w.tris.len(), COUNT);
+            let m = mean_area(w);
+            // The area is uniform in [a/2, 3a/2] before the angles' jitter
+            // (which makes it at most 6 % smaller).
+            assert!(m / target > 0.9 && m / target < 1.03, "{}: {m}", w.name);
+            let mut off_grid = 0;
+            for t in w.tris {
+                // 40° before the vertices are rounded to 1/16 px.
+                assert!(min_angle(t) > 38.0, "{}: {t:?}", w.name);
+                let frame = 16 * i32::from(FRAME);
+                for [x, y] in t.v {
+                    assert!(
+                        (0..frame).contains(&i32::from(x)) && (0..frame).contains(&i32::from(y))
+                    );
+                    off_grid += usize::from(x % 16 != 0 || y % 16 != 0);
+                }
+                for [x, y] in t.px() {
+                    assert!(
+                        (0..=i32::from(FRAME)).contains(&x) && (0..=i32::from(FRAME)).contains(&y)
+                    );
+                }
+            }
+            // Sub-pixel positions: most vertices are off the whole pixels.
+            assert!(off_grid > 3 * COUNT * 9 / 10, "{}: {off_grid}", w.name);
         }
     }
 }

@@ -62,7 +62,9 @@ use softedge_workloads::render::softedge_side::{
 };
 use softedge_workloads::render::targets::{Framebuffer, SpiCounter, FB_LEN};
 use softedge_workloads::render::ui;
-use softedge_workloads::{Tri, Workload, CLASSES, COUNT, SCREEN, SLANTED};
+use softedge_workloads::{
+    Tri, Workload, CLASSES, COUNT, SCREEN, SLANTED, WELL_CLASSES, WELL_MEDIUM,
+};
 
 /// Band heights of the screen sweep (16 is also every other run's).
 const SCREEN_BANDS: [u16; 7] = [16, 8, 6, 4, 3, 2, 1];
@@ -109,7 +111,13 @@ fn main() -> ! {
         .text("/")
         .dec(den)
         .print();
-    for w in CLASSES.iter().copied().chain([&SCREEN, &SLANTED]) {
+    for w in
+        CLASSES
+            .iter()
+            .chain(WELL_CLASSES.iter())
+            .copied()
+            .chain([&SCREEN, &SLANTED, &WELL_SCREEN])
+    {
         Line::new()
             .text("workload ")
             .text(w.name)
@@ -169,6 +177,15 @@ fn main() -> ! {
             for rows in [BAND_ROWS, 3] {
                 run(&SLANTED, SLANTED.tris, rows);
             }
+            // Well-shaped triangles (issue 32), and 132 of the medium
+            // ones in 16- and 3-row bands.
+            for w in WELL_CLASSES {
+                run(w, w.prefix(1), BAND_ROWS);
+                run(w, w.prefix(COUNT), BAND_ROWS);
+            }
+            for rows in [BAND_ROWS, 3] {
+                run(&WELL_SCREEN, WELL_SCREEN.tris, rows);
+            }
         }
     }
 
@@ -220,6 +237,13 @@ fn main() -> ! {
             run(w, w.prefix(COUNT));
         }
         run(&SCREEN, SCREEN.tris);
+        if r.name() == "eg_fill" {
+            for w in WELL_CLASSES {
+                run(w, w.prefix(1));
+                run(w, w.prefix(COUNT));
+            }
+            run(&WELL_SCREEN, WELL_SCREEN.tris);
+        }
     }
 
     // Shapes (issue 16): each alone on the frame, and the frame without
@@ -510,6 +534,13 @@ fn band_bytes(rows: u16) -> u64 {
 /// Walk-cache slots the dial's RAM is measured with (the last: all the
 /// benchmark has, as its other dial rows use).
 const DIAL_SLOTS: [usize; 5] = [0, 16, 32, 64, SLOTS];
+
+/// The first 132 of [`WELL_MEDIUM`]'s triangles (as many as the screen
+/// has, of about its triangles' area, overlapping at random).
+static WELL_SCREEN: Workload = Workload {
+    name: "wscreen",
+    tris: WELL_MEDIUM.tris.split_at(132).0,
+};
 
 /// The frame without triangles (the fixed cost), as a workload name.
 static EMPTY: Workload = Workload {

@@ -89,7 +89,7 @@ fn draw_all<D: DrawTarget<Color = Rgb565>>(tris: &[Tri], target: &mut D) {
     // Both targets are infallible.
     let _ = target.clear(Rgb565::BLACK);
     for t in tris {
-        let [a, b, c] = t.v.map(|[x, y]| Point::new(i32::from(x), i32::from(y)));
+        let [a, b, c] = t.px().map(|[x, y]| Point::new(x, y));
         let _ = Triangle::new(a, b, c)
             .into_styled(PrimitiveStyle::with_fill(rgb565(t.flat_rgb())))
             .draw(target);

@@ -164,8 +164,12 @@ pub fn frame_with_cache(
     }
 }
 
+/// The vertices on the fine grid: a whole-pixel vertex `(x, y)` at the
+/// centre of pixel `(x, y)`, as embedded-graphics reads it
+/// (`FinePoint::centre_of`); 1/16 px is 64 fine units.
 fn vertices(t: &Tri) -> [FinePoint; 3] {
-    t.v.map(|[x, y]| FinePoint::centre_of(i32::from(x), i32::from(y)))
+    let half = FinePoint::centre_of(0, 0).x;
+    t.v.map(|[x, y]| FinePoint::new(64 * i32::from(x) + half, 64 * i32::from(y) + half))
 }
 
 #[inline(never)]

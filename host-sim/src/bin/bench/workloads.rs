@@ -16,7 +16,7 @@ use softedge_workloads::render::softedge_side::{
     self, Buffers, ACC_LEN, COVER_LEN, LIST_LEN, OUT_LEN, SLOTS,
 };
 use softedge_workloads::render::targets::{Framebuffer, FB_LEN};
-use softedge_workloads::{Tri, Workload, CLASSES, COUNT, SCREEN};
+use softedge_workloads::{Tri, Workload, CLASSES, COUNT, SCREEN, WELL_CLASSES};
 
 /// Band heights of the screen sweep.
 const SCREEN_BANDS: [u16; 7] = [16, 8, 6, 4, 3, 2, 1];
@@ -94,6 +94,7 @@ struct Job {
 fn workload(name: &str) -> Option<&'static Workload> {
     CLASSES
         .iter()
+        .chain(WELL_CLASSES.iter())
         .copied()
         .chain([&SCREEN])
         .find(|w| w.name == name)
@@ -132,7 +133,7 @@ impl Job {
 /// its own colour space, no γ stage).
 fn tiny_skia_triangle(t: &Tri, aa: bool) -> Option<(tiny_skia::Path, tiny_skia::Paint<'static>)> {
     let mut pb = tiny_skia::PathBuilder::new();
-    let [a, b, c] = t.v.map(|[x, y]| (f32::from(x), f32::from(y)));
+    let [a, b, c] = t.v.map(|[x, y]| (f32::from(x) / 16.0, f32::from(y) / 16.0));
     pb.move_to(a.0, a.1);
     pb.line_to(b.0, b.1);
     pb.line_to(c.0, c.1);
