@@ -132,10 +132,11 @@ fn channels<F: Fetch, const C: usize>(t: &Lin) -> [u32; C] {
     }
 }
 
-/// `v` clamped to `0..=hi`.
+/// `v` clamped to `0..=hi` (0 when `hi < 0`; by `min` and `max`, as
+/// `Ord::clamp` has a panic path for `hi < 0`).
 #[inline(always)]
 fn clamp(v: i32, hi: i32) -> i32 {
-    v.clamp(0, hi)
+    v.min(hi).max(0)
 }
 
 // ------------------------------------------------------------------ copy

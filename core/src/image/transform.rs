@@ -263,8 +263,11 @@ impl Mapping {
             lo = lo.min(v);
             hi = hi.max(v);
         }
-        let top = (lo.saturating_sub(reach) >> 32).clamp(0, i64::from(self.height)) as i32;
-        let bottom = ((hi.saturating_add(reach) >> 32) + 1).clamp(0, i64::from(self.height)) as i32;
+        // `min` and `max`, not `Ord::clamp` (its panic path stays in the
+        // firmware).
+        let h = i64::from(self.height);
+        let top = (lo.saturating_sub(reach) >> 32).min(h).max(0) as i32;
+        let bottom = ((hi.saturating_add(reach) >> 32) + 1).min(h).max(0) as i32;
         top..bottom
     }
 }
