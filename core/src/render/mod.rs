@@ -306,16 +306,21 @@ impl<'a, const C: usize> Renderer<'a, C> {
         let mut report = FrameReport::default();
         let mut failed: Option<(i32, E)> = None;
         for band in bands {
-            let mut buf = match self.clean {
-                Some(size) if size == (band.width, band.rows) => {
-                    BandBuffer::reuse(&mut *self.acc, &mut *self.cover, band, bg)
-                }
-                _ => BandBuffer::new(&mut *self.acc, &mut *self.cover, band).map(|mut b| {
-                    b.clear(bg);
-                    b
-                }),
+            // Made in place (no `map_err`, no closure: each move of a band
+            // buffer is a copy of its palette).
+            let clean = self.clean == Some((band.width, band.rows));
+            let made = if clean {
+                BandBuffer::reuse(&mut *self.acc, &mut *self.cover, band, bg)
+            } else {
+                BandBuffer::new(&mut *self.acc, &mut *self.cover, band)
+            };
+            let mut buf = match made {
+                Ok(buf) => buf,
+                Err(e) => return Err(RenderError::Band(e)),
+            };
+            if !clean {
+                buf.clear(bg);
             }
-            .map_err(RenderError::Band)?;
             // The band's flush leaves it clean for the next.
             self.clean = None;
             let mut canvas = Canvas::typed(&mut buf, Some(WalkCache::new(&mut *self.slots)))

@@ -168,9 +168,14 @@ pub(crate) fn draw_lines<'t, S: GlyphSource, const C: usize, Col>(
         }
     }
     if let Some((lo, hi)) = touched {
-        let paint = Paint::Flat(color.map(|v| v.min(crate::LIN_MAX)));
-        let rule = Coverage::Rule(FillRule::NonZero);
-        buf.compose(lo, hi, rule, &paint, ComposeOp::Over(opacity));
+        let color = color.map(|v| v.min(crate::LIN_MAX));
+        if opacity.is_opaque() {
+            // Blends over palette colours kept as palette colours.
+            buf.compose_mask_over(lo, hi, &color);
+        } else {
+            let rule = Coverage::Rule(FillRule::NonZero);
+            buf.compose(lo, hi, rule, &Paint::Flat(color), ComposeOp::Over(opacity));
+        }
     }
     match missing {
         Some(c) => Err(DrawError::MissingGlyph(c)),
