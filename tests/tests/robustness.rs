@@ -217,3 +217,72 @@ fn extreme_embedded_graphics_geometry_is_drawn_or_refused_never_a_panic() {
         }
     }
 }
+
+/// The SVG path: an arc whose end points are in range but whose
+/// curve (radius 6582 px, rotated) reaches ~7750 px out.
+const G2_PATH: &str = "M 0 20.648 a 6582 7.831 322 1 1 0 7.831";
+
+/// Draws `d` filled and stroked on a 16 x 16 frame; the report.
+fn draw_svg(d: softedge::path::svg::SvgPath<'_>) -> FrameReport {
+    frame(16, 16, 4, |c| {
+        d.into_styled(AaStyle::with_fill(Rgb565::RED)).draw(c)?;
+        d.into_styled(AaStyle::with_stroke(Rgb565::WHITE, 1))
+            .draw(c)
+    })
+    .1
+}
+
+/// G2: `SvgPath::new` accepted a path that no band could draw. Now the
+/// check sees every point the arc is described with, and refuses it with
+/// a typed error naming the arc (at the arc command's byte).
+#[test]
+fn an_svg_arc_reaching_out_of_range_is_refused_when_checked() {
+    use softedge::path::svg::{SvgErrorKind, SvgPath};
+    let e = SvgPath::new(G2_PATH).unwrap_err();
+    assert_eq!((e.position, e.kind), (11, SvgErrorKind::ArcOutOfRange));
+    assert_eq!(
+        e.to_string(),
+        "path data, byte 11: arc reaching beyond the coordinate range of +-2048 px"
+    );
+}
+
+/// The documented promise, over a pseudo-random sweep of arcs (radii up
+/// to 8192 px, any rotation and flags, ends in range, some near the
+/// limit): a path `SvgPath::new` accepts draws with no shape rejected.
+/// The reference is the renderer's own report of rejections, which the
+/// check must predict; both outcomes occur in the sweep.
+#[test]
+fn every_checked_svg_path_draws_without_rejection() {
+    use softedge::path::svg::{SvgErrorKind, SvgPath};
+    let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut next = |m: u64| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed % m
+    };
+    let (mut ok, mut refused) = (0, 0);
+    for _ in 0..600 {
+        let mut coord = || next(4096) as i64 - 2048;
+        let (x0, y0, x1, y1) = (coord(), coord(), coord(), coord());
+        let rx = next(8192);
+        let ry = next(8192);
+        let rot = next(720);
+        let d = format!(
+            "M {x0} {y0} A {rx} {ry} {rot} {} {} {x1} {y1} Z",
+            next(2),
+            next(2)
+        );
+        match SvgPath::new(&d) {
+            Ok(p) => {
+                ok += 1;
+                assert_eq!(draw_svg(p).skipped.count, 0, "{d}");
+            }
+            Err(e) => {
+                refused += 1;
+                assert_eq!(e.kind, SvgErrorKind::ArcOutOfRange, "{d}");
+            }
+        }
+    }
+    assert!(ok > 50 && refused > 50, "{ok} accepted, {refused} refused");
+}
