@@ -14,7 +14,7 @@
 //! | `Circle { top_left, diameter }` | inscribed in the square `[x, x + d)^2`: centre `top_left + d/2`, radius `d/2` |
 //! | `Ellipse { top_left, size }` | inscribed in the rectangle: centre `top_left + size/2`, semi-axes `w/2`, `h/2` |
 //! | `Arc`, `Sector` | on that circle; angles clockwise on screen from +x (its `Angle`, decoded from the `f32` bits with integer operations) |
-//! | `RoundedRectangle` | the rectangle; each corner a quarter ellipse of semi-axes `(width, height)` of its `Size`, confined as embedded-graphics does (`confine_radii`), then by CSS's rule |
+//! | `RoundedRectangle` | the rectangle; each corner a quarter ellipse of semi-axes `(width, height)` of its `Size`, confined as embedded-graphics does (`confine_radii`, here in exact arithmetic: no overflow for any radii), then by CSS's rule |
 //! | `Polyline { translate, vertices }` | through the vertices' pixel centres, plus `translate` |
 //! | `PrimitiveStyle` | [`StrokeStyle`]: width in px; `StrokeAlignment` kept; miter joins with limit 4 (embedded-graphics bevels a miter longer than twice the width); butt caps |
 //!
@@ -117,9 +117,53 @@ impl From<eg::Rectangle> for Rectangle {
     }
 }
 
+/// The corner sizes of `c` confined to a `size` rectangle as
+/// embedded-graphics' `confine_radii` does, in exact arithmetic: the side
+/// whose two radii overlap it most (the first of equals, in the order
+/// top, right, bottom, left) gives the scale `side / sum`, and every
+/// radius is `radius * side / sum`, rounded down.
+///
+/// embedded-graphics 0.8 adds and multiplies the radii in `u32`: radii
+/// over 2^31 (a sum) or whose product with the side passes 2^32 panic in
+/// debug builds and wrap in release (issue #36, G1). Here the sums are
+/// `u64` (two `u32`s) and so are the products (a `u32` radius times a
+/// `u32` side), and each result is at most the side, so it fits a `u32`.
+/// Where embedded-graphics does not overflow, the radii are its own.
+fn confine_radii(c: eg::CornerRadii, size: Size) -> eg::CornerRadii {
+    let sum = |a: u32, b: u32| u64::from(a) + u64::from(b);
+    let sides = [
+        (sum(c.top_left.width, c.top_right.width), size.width),
+        (sum(c.top_right.height, c.bottom_right.height), size.height),
+        (sum(c.bottom_left.width, c.bottom_right.width), size.width),
+        (sum(c.top_left.height, c.bottom_left.height), size.height),
+    ];
+    let (mut overlap, mut side, mut radii) = (0u64, 0u64, 0u64);
+    for (s, extent) in sides {
+        let o = s.saturating_sub(u64::from(extent));
+        if o > overlap {
+            (overlap, side, radii) = (o, u64::from(extent), s);
+        }
+    }
+    if overlap == 0 || radii == 0 {
+        return c;
+    }
+    // v * side / radii <= side <= u32::MAX: v <= radii.
+    let f = |v: u32| {
+        let q = (u64::from(v) * side).checked_div(radii).unwrap_or(0);
+        u32::try_from(q).unwrap_or(u32::MAX)
+    };
+    let z = |s: Size| Size::new(f(s.width), f(s.height));
+    eg::CornerRadii {
+        top_left: z(c.top_left),
+        top_right: z(c.top_right),
+        bottom_right: z(c.bottom_right),
+        bottom_left: z(c.bottom_left),
+    }
+}
+
 impl From<eg::RoundedRectangle> for RoundedRectangle {
     fn from(r: eg::RoundedRectangle) -> Self {
-        let c = r.confine_radii().corners;
+        let c = confine_radii(r.corners, r.rectangle.size);
         let s = |z: Size| (fine(z.width), fine(z.height));
         RoundedRectangle::new(
             r.rectangle.into(),
@@ -204,6 +248,36 @@ mod tests {
         let a: Arc = eg::Arc::new(Point::new(0, 0), 10, 90.0.deg(), (-45.0).deg()).into();
         assert!((a.start.bits() - (90 << 16)).abs() <= 2);
         assert!((a.sweep.bits() + (45 << 16)).abs() <= 2);
+    }
+
+    /// Where embedded-graphics' own `confine_radii` does not overflow (radii
+    /// and sides below 2^16), ours gives its radii, over a pseudo-random
+    /// sweep.
+    #[test]
+    fn confined_radii_are_embedded_graphics_own_where_it_does_not_overflow() {
+        let mut seed = 0x2545_f491_u32;
+        let mut next = |m: u32| {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed % m
+        };
+        for _ in 0..20_000 {
+            let mut z = || Size::new(next(300), next(300));
+            let corners = eg::CornerRadii {
+                top_left: z(),
+                top_right: z(),
+                bottom_right: z(),
+                bottom_left: z(),
+            };
+            let rect = eg::Rectangle::new(Point::zero(), Size::new(next(400), next(400)));
+            let r = eg::RoundedRectangle::new(rect, corners);
+            assert_eq!(
+                confine_radii(corners, rect.size),
+                r.confine_radii().corners,
+                "{r:?}"
+            );
+        }
     }
 
     #[test]

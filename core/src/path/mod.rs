@@ -77,7 +77,9 @@
 //! Every loop is bounded by the input: at most
 //! [`MAX_CURVE_SEGMENTS`] (1024) segments per Bézier, [`MAX_ELLIPSE_SEGMENTS`]
 //! (2048) per circle or ellipse, [`MAX_ARC_SEGMENTS`] (2048) per arc,
-//! [`MAX_DASH_INTERVALS`] (65536) dash intervals per contour, a few dozen
+//! [`MAX_DASH_INTERVALS`] (65536) dash intervals per contour,
+//! [`MAX_STROKE_WORK`] (16384) segments of dashes per stroke as charged
+//! (whether a band builds them or steps over them), a few dozen
 //! steps per square root, angle or number. Radii are limited to
 //! [`MAX_RADIUS`] (8192 px), stroke widths to [`MAX_STROKE_WIDTH`] (4096
 //! px). Typical counts at the default tolerance: a circle of radius 1/2
@@ -137,7 +139,7 @@ pub use shape::{
 };
 pub use stroke::{
     Dash, LineCap, LineJoin, MiterLimit, StrokeAlignment, StrokeError, StrokeStyle, Stroker,
-    MAX_DASH_INTERVALS, MAX_STROKE_WIDTH,
+    MAX_DASH_INTERVALS, MAX_STROKE_WIDTH, MAX_STROKE_WORK,
 };
 
 /// How far flattened curves may stray from the true curves, in fine units

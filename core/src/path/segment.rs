@@ -128,6 +128,16 @@ pub(crate) fn emit<S: SegmentSink + ?Sized>(sink: &mut S, a: Pt, b: Pt) {
     sink.skipped(CLAMPED_NUMBERS - sent);
 }
 
+/// The numbers [`emit`] takes for `a -> b`: one within the range square
+/// (or with no length), [`CLAMPED_NUMBERS`] leaving it.
+pub(crate) fn numbers(a: Pt, b: Pt) -> u32 {
+    if a == b || (in_square(a) && in_square(b)) {
+        1
+    } else {
+        CLAMPED_NUMBERS
+    }
+}
+
 /// `p` lies in the range square (its segments are sent unclamped).
 #[inline]
 pub(crate) fn in_square(p: Pt) -> bool {

@@ -18,9 +18,11 @@
 //! significant digits; later ones are dropped, which can matter only for a
 //! tie 19 digits down) and rounded once to the nearest fine unit, ties
 //! away from zero: `0.0009765625` is
-//! exactly one fine unit. A number beyond `+-`[`NUMBER_LIMIT`] px, or an
-//! end point beyond the coordinate range (`+-2048` px), is an error, never
-//! an overflow.
+//! exactly one fine unit. A number beyond `+-`[`NUMBER_LIMIT`] px, an
+//! end or control point beyond the coordinate range (`+-2048` px), or an
+//! arc any point of whose description (its cubics' control and end points)
+//! lies beyond it, is an error, never an overflow: a path that parses
+//! without error is drawn with no point out of range.
 //!
 //! ## Errors
 //!
@@ -57,6 +59,11 @@ pub enum SvgErrorKind {
     NumberOutOfRange,
     /// An end or control point beyond the coordinate range.
     PointOutOfRange,
+    /// An arc (`A`) whose end points are in range but whose curve is not:
+    /// a point of the cubics it is described with lies beyond the
+    /// coordinate range (SVG scales small radii up, never large ones
+    /// down, so an arc of large radii can reach far out).
+    ArcOutOfRange,
 }
 
 /// An error in path data: where (a byte offset into the string) and what.
@@ -85,6 +92,7 @@ impl core::fmt::Display for SvgError {
             SvgErrorKind::ExpectedFlag => "expected an arc flag, 0 or 1",
             SvgErrorKind::NumberOutOfRange => "number beyond +-8192",
             SvgErrorKind::PointOutOfRange => "point beyond the coordinate range of +-2048 px",
+            SvgErrorKind::ArcOutOfRange => "arc reaching beyond the coordinate range of +-2048 px",
         };
         write!(f, "path data, byte {}: {}", self.position, what)
     }
@@ -112,7 +120,7 @@ impl core::fmt::Display for SvgError {
 /// assert_eq!(err.position, 10);
 /// ```
 pub fn parse_path_data<P: PathSink + ?Sized>(d: &str, sink: &mut P) -> Result<(), SvgError> {
-    Parser::new(d.as_bytes()).run(sink)
+    Parser::new(d.as_bytes(), true).run(sink)
 }
 
 /// Path data checked once: [`describe`](super::Shape::describe) it as often
@@ -143,9 +151,42 @@ impl<'a> SvgPath<'a> {
 
 impl super::Shape for SvgPath<'_> {
     fn describe<P: PathSink + ?Sized>(&self, sink: &mut P) {
-        // Checked in `new`: this cannot fail.
-        let _ = parse_path_data(self.d, sink);
+        // Checked in `new` (arcs included): this cannot fail, and the
+        // arcs need not be described twice to check them again.
+        let _ = Parser::new(self.d.as_bytes(), false).run(sink);
     }
+}
+
+/// A sink that notes whether any point it is given lies beyond the
+/// coordinate range (for checking arcs: what a canvas would reject).
+#[derive(Default)]
+struct RangeCheck {
+    beyond: bool,
+}
+
+impl RangeCheck {
+    fn add(&mut self, p: FinePoint) {
+        self.beyond |= !p.in_range();
+    }
+}
+
+impl PathSink for RangeCheck {
+    fn move_to(&mut self, p: FinePoint) {
+        self.add(p);
+    }
+    fn line_to(&mut self, p: FinePoint) {
+        self.add(p);
+    }
+    fn quad_to(&mut self, c: FinePoint, p: FinePoint) {
+        self.add(c);
+        self.add(p);
+    }
+    fn cubic_to(&mut self, c1: FinePoint, c2: FinePoint, p: FinePoint) {
+        self.add(c1);
+        self.add(c2);
+        self.add(p);
+    }
+    fn close(&mut self) {}
 }
 
 /// A sink that ignores everything (for checking).
@@ -176,6 +217,9 @@ struct Parser<'a> {
     /// A `close` was the last thing: the next drawing command restarts at
     /// `start` with a `move_to`.
     closed: bool,
+    /// Arcs are described once into a [`RangeCheck`] before the sink sees
+    /// them (off for a path already checked).
+    check_arcs: bool,
 }
 
 fn err(position: usize, kind: SvgErrorKind) -> SvgError {
@@ -190,7 +234,7 @@ fn is_wsp(c: u8) -> bool {
 const LIMIT_FINE: i64 = NUMBER_LIMIT as i64 * 1024;
 
 impl<'a> Parser<'a> {
-    fn new(s: &'a [u8]) -> Self {
+    fn new(s: &'a [u8], check_arcs: bool) -> Self {
         Self {
             s,
             pos: 0,
@@ -198,6 +242,7 @@ impl<'a> Parser<'a> {
             start: Pt::default(),
             prev: Prev::Other,
             closed: false,
+            check_arcs,
         }
     }
 
@@ -407,6 +452,13 @@ impl<'a> Parser<'a> {
                 let large = self.flag()?;
                 let sweep = self.flag()?;
                 let p = self.point(rel)?;
+                if self.check_arcs {
+                    let mut range = RangeCheck::default();
+                    arc_to(&mut range, self.current, p, rx, ry, rot, large, sweep);
+                    if range.beyond {
+                        return Err(err(here, SvgErrorKind::ArcOutOfRange));
+                    }
+                }
                 self.reopen(sink);
                 arc_to(sink, self.current, p, rx, ry, rot, large, sweep);
                 self.current = p;

@@ -22,8 +22,29 @@
 //! stroked and the stroker reports [`StrokeError::TooManyDashes`]. So a
 //! pattern of 1/1024-px dashes along a long path costs at most that many
 //! steps per contour.
+//!
+//! A band needs only the dashes that reach its rows. A dash whose part of
+//! the path, widened by the stroke's reach, lies wholly above or below the
+//! sink's [`window`](SegmentSink::window) (and within the range square)
+//! is *quiet*: its caps, joins and edges are not built, only their
+//! segments counted as left out (so every segment keeps its number, which
+//! a band's walk cache relies on). A band builds the dashes near it; the
+//! others cost their stepping and bookkeeping.
+//!
+//! And every stroke's dashes are charged against [`MAX_STROKE_WORK`], the
+//! same way whether they are built or quiet (so that every band stops at
+//! the same dash): one unit per interval stepped and, for each dash, the
+//! cost of its two caps plus four (a cap's segments; a
+//! round cap's arc twice its segments and its setup, `ARC_SETUP` = 32). Past the budget the rest of the
+//! stroke is not stroked and the stroker reports
+//! [`StrokeError::TooComplex`]. So a band builds at most about
+//! `MAX_STROKE_WORK` segments of dashes, whatever the pattern, width and
+//! caps. Butt-capped dashes cost 8 units a period: a stroke has at most
+//! about 2 000 of them.
 
+use crate::geom::FINE_LIMIT;
 use crate::path::segment::SegmentSink;
+use crate::path::vector::Pt;
 
 use super::outline::{JoinKind, Outline, Piece};
 use super::StrokeError;
@@ -31,6 +52,10 @@ use super::StrokeError;
 /// The most pattern intervals (dashes and gaps) stepped through in one
 /// contour.
 pub const MAX_DASH_INTERVALS: u32 = 1 << 16;
+
+/// The most segments one dashed stroke may build, as charged (see
+/// "Bounded work" in [`dash`](self)): units of one segment.
+pub const MAX_STROKE_WORK: u32 = 1 << 14;
 
 /// A dash pattern: lengths in fine units (1/1024 px) of dash, gap, dash,
 /// gap, ... and the distance into the pattern at which each contour
@@ -102,6 +127,95 @@ impl<'d> Dash<'d> {
     }
 }
 
+/// Fine units of slack around a dash's reach when culling it: the
+/// area-preserving arcs of round caps put vertices a few units out, plus
+/// the grid rounding.
+const CULL_SLACK: i64 = 16;
+
+/// Where along a piece its dashes miss a window: the cross-section of the
+/// piece at `u` runs from its `m` edge to its `p` edge (the path's point
+/// between them), both edges straight in `u`; the segments of dashes
+/// (parts of the piece, their caps, dots) lie within `reach` of the
+/// cross-sections they span.
+struct Clear {
+    /// The two edges' y at the piece's start and end, fine units.
+    edges: [(i64, i64); 2],
+    len: i64,
+    /// The window widened by the reach.
+    lo: i64,
+    hi: i64,
+}
+
+impl Clear {
+    /// `None` without a window (nothing can be skipped).
+    fn new(p: &Piece, window: Option<(i32, i32)>, reach: i64) -> Option<Self> {
+        let (lo, hi) = window?;
+        // Quiet pieces' segments must each take one number: everything
+        // they send within the range square.
+        let room = i64::from(FINE_LIMIT).saturating_sub(reach);
+        let ok = |q: Pt| q.x.abs() <= room && q.y.abs() <= room;
+        if ![p.sm, p.sp, p.em, p.ep].into_iter().all(ok) {
+            return None;
+        }
+        let c = Self {
+            edges: [(p.sm.y, p.em.y), (p.sp.y, p.ep.y)],
+            len: p.len.max(1),
+            lo: i64::from(lo).saturating_sub(reach),
+            hi: i64::from(hi).saturating_add(reach),
+        };
+        // A piece within the widened window has no cross-section that
+        // misses it: nothing to look for.
+        let inside = |y: i64| (c.lo..=c.hi).contains(&y);
+        let [(a, b), (d, e)] = c.edges;
+        if inside(a) && inside(b) && inside(d) && inside(e) {
+            return None;
+        }
+        Some(c)
+    }
+
+    /// The furthest `v >= u` such that the cross-sections over `[u, v]`
+    /// all lie wholly above the widened window or all wholly below it;
+    /// `None` when the one at `u` meets it. Exact: an edge's y at `u` is
+    /// `(y0 len + (y1 - y0) u) / len`, compared multiplied out in `i128`.
+    fn until(&self, u: i64) -> Option<i64> {
+        let len = i128::from(self.len);
+        let u128_ = i128::from(u);
+        // y(u) * len for each edge.
+        let at = |(y0, y1): (i64, i64)| i128::from(y0) * len + i128::from(y1 - y0) * u128_;
+        let above = self
+            .edges
+            .iter()
+            .all(|&e| at(e) < i128::from(self.lo) * len);
+        let below = self
+            .edges
+            .iter()
+            .all(|&e| at(e) > i128::from(self.hi) * len);
+        if !above && !below {
+            return None;
+        }
+        let mut v = i128::from(self.len);
+        for &(y0, y1) in &self.edges {
+            let d = i128::from(y1) - i128::from(y0);
+            // Above: y0 len + d w < lo len while w < (lo - y0) len / d
+            // (d > 0); below: y0 len + d w > hi len while
+            // w < (y0 - hi) len / (-d) (d < 0). The last whole w before.
+            let bound = if above && d > 0 {
+                Some(((i128::from(self.lo) - i128::from(y0)) * len, d))
+            } else if below && d < 0 {
+                Some(((i128::from(y0) - i128::from(self.hi)) * len, -d))
+            } else {
+                None
+            };
+            if let Some((num, den)) = bound {
+                // Largest w with w * den < num: ceil(num / den) - 1.
+                let w = (num + den - 1).div_euclid(den) - 1;
+                v = v.min(w);
+            }
+        }
+        Some(v.max(u128_).min(i128::from(self.len)) as i64)
+    }
+}
+
 /// Walks one contour's pieces through the pattern.
 pub(crate) struct Dasher<'d> {
     dash: Dash<'d>,
@@ -117,15 +231,26 @@ pub(crate) struct Dasher<'d> {
     /// A zero-length dash sits exactly at the contour's start.
     start_dot: bool,
     error: Option<StrokeError>,
+    /// Work charged so far in the stroke (all contours), segments.
+    work: u64,
+    /// The charge of one dash: its caps and a body, segments.
+    dash_cost: u64,
+    /// How far a dash's segments reach beyond its piece, fine units.
+    reach: i64,
 }
 
 impl<'d> Dasher<'d> {
     /// `None` for a pattern that changes nothing (see [`Dash::is_solid`]).
-    pub fn new(dash: Dash<'d>) -> Option<Self> {
+    /// `dash_cost` is what one dash is charged (segments of its caps and
+    /// body); `reach` how far its caps reach beyond its piece (fine units).
+    pub fn new(dash: Dash<'d>, dash_cost: u64, reach: i64) -> Option<Self> {
         if dash.is_solid() {
             return None;
         }
         Some(Self {
+            work: 0,
+            dash_cost,
+            reach,
             dash,
             count: dash.count(),
             i: 0,
@@ -162,7 +287,8 @@ impl<'d> Dasher<'d> {
         self.rem = (self.dash.interval(self.i) - off).max(0);
         self.on = self.i % 2 == 0;
         self.steps = 0;
-        self.stopped = false;
+        // Past the budget, the rest of the stroke draws nothing.
+        self.stopped = self.error == Some(StrokeError::TooComplex);
         self.run_active = false;
     }
 
@@ -170,13 +296,30 @@ impl<'d> Dasher<'d> {
     /// gets its dot).
     pub fn starts_on(&mut self) -> bool {
         self.reset();
-        self.on
+        if self.on && !self.stopped {
+            self.charge(self.dash_cost);
+        }
+        self.on && !self.stopped
+    }
+
+    /// Charges `units` of work; false (and the stroke stopped) past the
+    /// budget.
+    fn charge(&mut self, units: u64) -> bool {
+        self.work = self.work.saturating_add(units);
+        if self.work > u64::from(MAX_STROKE_WORK) {
+            self.stopped = true;
+            if self.error.is_none() {
+                self.error = Some(StrokeError::TooComplex);
+            }
+            return false;
+        }
+        true
     }
 
     /// Starts a contour (its first piece follows).
     pub fn begin_contour<S: SegmentSink + ?Sized>(&mut self, out: &mut Outline<'_, S>) {
         self.reset();
-        if self.on {
+        if self.on && !self.stopped && self.charge(self.dash_cost) {
             out.begin_run(true);
             self.run_active = true;
         }
@@ -189,7 +332,7 @@ impl<'d> Dasher<'d> {
         join: JoinKind,
         out: &mut Outline<'_, S>,
     ) {
-        if self.start_dot {
+        if self.start_dot && !self.stopped {
             self.start_dot = false;
             // (When the contour starts on a dash, the dot lies under its cap.)
             if out.draws_dots() && !self.on {
@@ -200,19 +343,25 @@ impl<'d> Dasher<'d> {
         }
         let len = p.len;
         let mut u = 0i64;
+        let clear = Clear::new(&p, out.window(), self.reach.saturating_add(CULL_SLACK));
         // Each pass consumes the rest of the piece or the rest of an
         // interval (counted in `advance`): bounded.
         while !self.stopped {
             let take = self.rem.min(len - u);
             if self.on && take > 0 {
-                out.piece(p.cut(u, u + take), join);
+                let mut cut = p.cut(u, u + take);
+                cut.quiet = clear
+                    .as_ref()
+                    .and_then(|c| c.until(u))
+                    .is_some_and(|v| v >= u + take);
+                out.piece(cut, join);
             }
             u += take;
             self.rem -= take;
             if self.rem > 0 {
                 break;
             }
-            self.advance(&p, u, out);
+            self.advance(&p, u, clear.as_ref(), out);
             if u >= len {
                 break;
             }
@@ -221,7 +370,13 @@ impl<'d> Dasher<'d> {
 
     /// The interval ended at `u` along `p`: steps to the next interval of
     /// positive length, ending or starting runs (and dots) on the way.
-    fn advance<S: SegmentSink + ?Sized>(&mut self, p: &Piece, u: i64, out: &mut Outline<'_, S>) {
+    fn advance<S: SegmentSink + ?Sized>(
+        &mut self,
+        p: &Piece,
+        u: i64,
+        clear: Option<&Clear>,
+        out: &mut Outline<'_, S>,
+    ) {
         let was_on = self.on;
         let mut k = self.i;
         let mut passed_dash = false;
@@ -229,10 +384,15 @@ impl<'d> Dasher<'d> {
         for _ in 0..self.count {
             self.steps += 1;
             if self.steps > MAX_DASH_INTERVALS {
-                self.stop(out);
+                self.stop(StrokeError::TooManyDashes, out);
                 return;
             }
             k = (k + 1) % self.count.max(1);
+            let cost = if k % 2 == 0 { 1 + self.dash_cost } else { 1 };
+            if !self.charge(cost) {
+                self.stop(StrokeError::TooComplex, out);
+                return;
+            }
             let len = self.dash.interval(k);
             if len > 0 {
                 break;
@@ -254,7 +414,9 @@ impl<'d> Dasher<'d> {
             (false, false) if passed_dash && out.draws_dots() => {
                 // A zero-length dash between two gaps: a dot.
                 out.begin_run(false);
-                out.piece(p.cut(u, u), JoinKind::Path);
+                let mut dot = p.cut(u, u);
+                dot.quiet = clear.is_some_and(|c| c.until(u).is_some());
+                out.piece(dot, JoinKind::Path);
                 out.end_run();
             }
             // Zero-length gaps inside one dash: the run goes on.
@@ -262,9 +424,11 @@ impl<'d> Dasher<'d> {
         }
     }
 
-    fn stop<S: SegmentSink + ?Sized>(&mut self, out: &mut Outline<'_, S>) {
+    fn stop<S: SegmentSink + ?Sized>(&mut self, e: StrokeError, out: &mut Outline<'_, S>) {
         self.stopped = true;
-        self.error = Some(StrokeError::TooManyDashes);
+        if self.error.is_none() {
+            self.error = Some(e);
+        }
         if self.run_active {
             out.end_run();
             self.run_active = false;
@@ -295,11 +459,11 @@ mod tests {
     #[test]
     fn the_phase_starts_inside_the_right_interval() {
         let d = Dash::new(&[10, 20, 30, 40], 35);
-        let mut s = Dasher::new(d).unwrap_or_else(|| unreachable!());
+        let mut s = Dasher::new(d, 4, 0).unwrap_or_else(|| unreachable!());
         assert!(s.starts_on());
         assert_eq!((s.i, s.rem), (2, 25));
         let d = Dash::new(&[10, 20], -5);
-        let mut s = Dasher::new(d).unwrap_or_else(|| unreachable!());
+        let mut s = Dasher::new(d, 4, 0).unwrap_or_else(|| unreachable!());
         assert!(!s.starts_on());
         assert_eq!((s.i, s.rem), (1, 5));
     }

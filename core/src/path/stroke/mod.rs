@@ -76,7 +76,7 @@ use super::vector::{Pt, Unit};
 use super::Tolerance;
 
 use dash::Dasher;
-pub use dash::{Dash, MAX_DASH_INTERVALS};
+pub use dash::{Dash, MAX_DASH_INTERVALS, MAX_STROKE_WORK};
 use outline::{JoinKind, Outline, Piece, Sides};
 
 /// The widest stroke, `2^22` fine units (4096 px); wider ones are limited
@@ -215,6 +215,11 @@ pub enum StrokeError {
     /// A contour stepped through more than [`MAX_DASH_INTERVALS`] dash
     /// pattern intervals; the rest of that contour was not stroked.
     TooManyDashes,
+    /// The stroke's dashes would build more than [`MAX_STROKE_WORK`]
+    /// segments (each dash charged its caps and body, whether or not it
+    /// meets the band being drawn, so every band stops at the same dash);
+    /// the rest of the stroke was not stroked.
+    TooComplex,
 }
 
 impl core::fmt::Display for StrokeError {
@@ -223,6 +228,10 @@ impl core::fmt::Display for StrokeError {
             StrokeError::TooManyDashes => write!(
                 f,
                 "dash pattern too fine: more than {MAX_DASH_INTERVALS} intervals in one contour"
+            ),
+            StrokeError::TooComplex => write!(
+                f,
+                "stroke too complex: its dashes would build more than {MAX_STROKE_WORK} segments"
             ),
         }
     }
@@ -385,9 +394,15 @@ impl<'s, 'd, S: SegmentSink + ?Sized> Stroker<'s, 'd, S> {
     /// (plus the grid rounding).
     pub fn with_tolerance(style: &StrokeStyle<'d>, tol: Tolerance, sink: &'s mut S) -> Self {
         let sides = style.sides();
+        let outline = Outline::new(sink, style.join, style.miter_limit, style.cap, sides, tol);
+        // A dash is charged its two caps and a body (two offset edges and
+        // the two segments of an inner corner); its caps, dots and joins
+        // reach at most the style's reach beyond its path.
+        let dash_cost = 2 * outline.cap_cost() + 4;
+        let reach = style.reach();
         Self {
-            outline: Outline::new(sink, style.join, style.miter_limit, style.cap, sides, tol),
-            dasher: style.dash.and_then(Dasher::new),
+            outline,
+            dasher: style.dash.and_then(|d| Dasher::new(d, dash_cost, reach)),
             sides,
             tol,
             start: Pt::default(),

@@ -48,13 +48,19 @@
 //! Everything else is emitted at once, so the outline needs two pieces of
 //! memory.
 
-use crate::path::arc::{arc_inner_vertices, ellipse_points, EllipseFrame};
-use crate::path::segment::{emit, Contour, SegmentSink};
-use crate::path::trig::{atan2, div_round, Q30};
+use crate::path::arc::{arc_count, arc_inner_vertices, ellipse_points, EllipseFrame};
+use crate::path::segment::{emit, numbers, Contour, SegmentSink, Vertices};
+use crate::path::trig::{atan2, div_round, Q30, TURN};
 use crate::path::vector::{Pt, Unit, UNIT_X};
 use crate::path::Tolerance;
 
 use super::{LineCap, LineJoin, MiterLimit};
+
+/// What setting up one arc (its count, area factor, first vertex and y
+/// estimate) costs, in segments' worth of work: measured on the host
+/// (callgrind, issue #36), a round cap of a thin stroke costs about 40
+/// segments' time for its 4 or 5 segments.
+pub(crate) const ARC_SETUP: u64 = 32;
 
 /// How far the stroke reaches on each side of the path, in half fine
 /// units (1/2048 px): `m` to the left of the direction of travel on
@@ -85,6 +91,12 @@ pub(crate) struct Piece {
     pub ep: Pt,
     /// `floor(|e - s|)` in fine units.
     pub len: i64,
+    /// Every segment of this piece, of its caps and of its joins lies
+    /// outside the sink's window and within the range square (a dash that
+    /// misses the band): none is sent, only counted as left out (one
+    /// number each, so the numbers of what follows do not change), and
+    /// no arc is computed; the piece takes part in its run as usual.
+    pub quiet: bool,
 }
 
 impl Piece {
@@ -100,6 +112,7 @@ impl Piece {
             em: e.offset(ne, -sides.m, 31),
             ep: e.offset(ne, sides.p, 31),
             len: e.sub(s).len(),
+            quiet: false,
         }
     }
 
@@ -146,6 +159,7 @@ impl Piece {
             em: lerp(self.sm, self.em, u1),
             ep: lerp(self.sp, self.ep, u1),
             len: (u1 - u0).max(0),
+            quiet: self.quiet,
         }
     }
 }
@@ -178,6 +192,9 @@ pub(crate) struct Outline<'s, S: SegmentSink + ?Sized> {
     held: Option<Piece>,
     /// The current run began at the contour's start.
     run_holds: bool,
+    /// What is being sent belongs to a quiet piece: only its numbers go
+    /// to the sink (see [`Piece::quiet`]).
+    quiet: bool,
 }
 
 impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
@@ -200,6 +217,29 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
             pending_held: false,
             held: None,
             run_holds: false,
+            quiet: false,
+        }
+    }
+
+    /// The rows the sink needs ([`SegmentSink::window`]).
+    pub fn window(&self) -> Option<(i32, i32)> {
+        self.sink.window()
+    }
+
+    /// What one cap costs, in segments: a butt cap one, a square cap
+    /// three, a round cap twice its half turn of arc (each vertex is
+    /// computed: on the host a segment of an arc costs about twice a
+    /// straight one) plus [`ARC_SETUP`].
+    pub fn cap_cost(&self) -> u64 {
+        match self.cap {
+            LineCap::Butt => 1,
+            LineCap::Square => 3,
+            LineCap::Round => {
+                // Radius: half the width, in fine units (sides are in
+                // half fine units).
+                let r = self.sides.width() / 4;
+                2 * u64::from(arc_count(r, crate::path::trig::HALF_TURN, self.tol)) + ARC_SETUP
+            }
         }
     }
 
@@ -208,8 +248,13 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
         self.cap != LineCap::Butt
     }
 
+    /// `a -> b` to the sink, or, quiet, only its numbers.
     fn seg(&mut self, a: Pt, b: Pt) {
-        emit(self.sink, a, b);
+        if self.quiet {
+            self.sink.skipped(numbers(a, b));
+        } else {
+            emit(self.sink, a, b);
+        }
     }
 
     /// Starts a run; `at_contour_start` when it begins where the contour
@@ -331,8 +376,10 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
     }
 
     fn sides_of(&mut self, p: &Piece) {
+        self.quiet = p.quiet;
         self.seg(p.sm, p.em);
         self.seg(p.ep, p.sp);
+        self.quiet = false;
     }
 
     /// The join between `a` (ending at `v`) and `b` (starting there):
@@ -343,6 +390,9 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
         if a.ne == b.ns {
             return;
         }
+        // A quiet piece's cross-section at `v` misses the window by the
+        // stroke's reach, and so does everything the join sends.
+        self.quiet = a.quiet || b.quiet;
         let (na, nb) = (a.ne, b.ns);
         let cross = na.cross(nb);
         let right_turn = cross > 0 || (cross == 0 && na.dot(nb) < 0);
@@ -369,6 +419,7 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
                 self.seg(v, b.sm);
             }
         }
+        self.quiet = false;
     }
 
     /// The outer boundary of a join at `v` from `from` to `to` (offset
@@ -406,24 +457,35 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
     /// `r_q8`, from parameter `t0` over `sweep` (clockwise, binary units).
     fn arc(&mut self, c_q8: Pt, r_q8: i64, t0: i64, sweep: i64, from: Pt, to: Pt) {
         let frame = EllipseFrame::with_q8(c_q8, r_q8, r_q8, UNIT_X);
-        let mut prev = from;
         let tol = self.tol;
-        let sink = &mut *self.sink;
-        arc_inner_vertices(&frame, t0, sweep, tol, from, &mut |p| {
-            emit(sink, prev, p);
-            prev = p;
-        });
+        if self.quiet {
+            // The arc's m segments (m - 1 inner vertices and the last
+            // one), each within the range square: one number each.
+            let m = arc_count(frame.major(), sweep.clamp(-TURN, TURN), tol);
+            self.sink.skipped(m);
+            return;
+        }
+        let mut out = ArcOut {
+            sink: &mut *self.sink,
+            prev: from,
+        };
+        arc_inner_vertices(&frame, t0, sweep, tol, from, &mut out);
+        let prev = out.prev;
         emit(self.sink, prev, to);
     }
 
     /// The cap before a run's first piece: `sp -> ... -> sm`.
     fn start_cap(&mut self, p: &Piece) {
+        self.quiet = p.quiet;
         self.cap_path(p.sp, p.sm);
+        self.quiet = false;
     }
 
     /// The cap after a run's last piece: `em -> ... -> ep`.
     fn end_cap(&mut self, p: &Piece) {
+        self.quiet = p.quiet;
         self.cap_path(p.em, p.ep);
+        self.quiet = false;
     }
 
     /// A cap from `from` to `to` (the ends of a cross-section), bulging
@@ -453,6 +515,28 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
                 self.arc(c_q8, r_q8, t0, crate::path::trig::HALF_TURN, from, to);
             }
         }
+    }
+}
+
+/// The inner vertices of a join's or cap's arc as segments from `prev`:
+/// the pieces of the arc that miss the sink's window are jumped over
+/// (their segments counted as left out), as the curves of fills are.
+struct ArcOut<'a, S: SegmentSink + ?Sized> {
+    sink: &'a mut S,
+    prev: Pt,
+}
+
+impl<S: SegmentSink + ?Sized> Vertices for ArcOut<'_, S> {
+    fn vertex(&mut self, p: Pt) {
+        emit(self.sink, self.prev, p);
+        self.prev = p;
+    }
+    fn window(&self) -> Option<(i32, i32)> {
+        self.sink.window()
+    }
+    fn jump(&mut self, p: Pt, n: u32) {
+        self.sink.skipped(n);
+        self.prev = p;
     }
 }
 
