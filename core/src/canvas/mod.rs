@@ -479,6 +479,12 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
+        if let Some(c) = shape.key().and_then(|k| k.circle()) {
+            let q = u64::from(c.radius) * 4;
+            if let Some(r) = self.exact_circle(c.centre, q, 0, fill, rule, blend, opacity) {
+                return r;
+            }
+        }
         let tol = crate::path::Tolerance::DEFAULT;
         let kept = self.kept_outline(
             || shape.key().map(|k| retained::OutlineKey::fill(k, tol)),
@@ -557,6 +563,75 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
                     .map_or(Ok(()), |e| Err(DrawError::Stroke(e)))
             });
         r.inspect_err(|&e| self.skip(serial, e))
+    }
+
+    /// A disc (`inner` 0) or a ring of centre `c` and radii `outer >
+    /// inner` (quarter fine units) by its circles' exact areas
+    /// ([`edge::disc`](crate::edge::disc)), for the exact box model, in
+    /// any paint; `None` for anything else (drawn from its outline).
+    #[allow(clippy::too_many_arguments)]
+    fn exact_circle(
+        &mut self,
+        c: FinePoint,
+        outer: u64,
+        inner: u64,
+        fill: Fill<'_, C>,
+        rule: FillRule,
+        blend: Blend,
+        opacity: Opacity,
+    ) -> Option<Result<(), DrawError>> {
+        use crate::edge::disc::{CircleEdge, MAX_RADIUS_Q};
+        if WalkKind::of(self.style) != WalkKind::Box(AreaMode::Exact) || outer <= inner {
+            return None;
+        }
+        if outer > u64::from(MAX_RADIUS_Q) {
+            return None;
+        }
+        // Its box as its outline's (`paths::shape_bounds`, widened by the
+        // curves' margin), all in range: out of range, the outline path
+        // reports it.
+        let reach = (outer as i32 + 3) / 4 + 16;
+        let b = FineRect {
+            x0: c.x - reach,
+            y0: c.y - reach,
+            x1: c.x + reach,
+            y1: c.y + reach,
+        };
+        if !(FinePoint::new(b.x0, b.y0).in_range() && FinePoint::new(b.x1, b.y1).in_range()) {
+            return None;
+        }
+        let out = CircleEdge::new(c.x * 4, c.y * 4, outer as u32)?;
+        let hole = if inner > 0 {
+            Some(CircleEdge::new(c.x * 4, c.y * 4, inner as u32)?)
+        } else {
+            None
+        };
+        let _serial = self.next_serial();
+        if !self.touches(&b) {
+            return Some(Ok(()));
+        }
+        let band = self.buf.band();
+        let span = out.rows();
+        let rows = span.start.max(band.y0)..span.end.min(band.y0 + i32::from(band.rows));
+        if rows.start >= rows.end {
+            return Some(Ok(()));
+        }
+        let mut d = self.buf.deltas(rows.clone());
+        out.walk(rows.clone(), 1, &mut d);
+        if let Some(h) = hole {
+            h.walk(rows.clone(), -1, &mut d);
+        }
+        let paint = match fill {
+            Fill::Flat(color) => Paint::Flat(color.map(|v| v.min(crate::LIN_MAX))),
+            Fill::Gradient(g) => g.flat().map_or(Paint::Gradient(g), Paint::Flat),
+        };
+        let coverage = match self.edges {
+            Edges::Smooth => Coverage::Rule(rule),
+            e => Coverage::Sharpened(rule, e),
+        };
+        let op = op_of(blend, opacity);
+        self.buf.compose(rows.start, rows.end, coverage, &paint, op);
+        Some(Ok(()))
     }
 
     /// `paint` of the shape cache's outline of `key` (made from `bounds`
