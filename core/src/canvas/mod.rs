@@ -529,6 +529,23 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
+        if let Some(c) = shape.key().and_then(|k| k.circle()) {
+            // Without dashes, the ring between radii `r + o` and `r - i`
+            // (`Circle::stroke_with`), exact in quarter fine units.
+            let dashed = style.dash.is_some_and(|d| !d.is_solid());
+            if !dashed && c.radius > 0 && style.width > 0 {
+                let (o, i) = style.reach_q1();
+                let r = i64::from(c.radius) * 4;
+                let (outer, inner) = (r + 2 * o, (r - 2 * i).max(0));
+                if let (Ok(outer), Ok(inner)) = (u64::try_from(outer), u64::try_from(inner)) {
+                    let nz = FillRule::NonZero;
+                    let r = self.exact_circle(c.centre, outer, inner, fill, nz, blend, opacity);
+                    if let Some(r) = r {
+                        return r;
+                    }
+                }
+            }
+        }
         let serial = self.next_serial();
         let tol = crate::path::Tolerance::DEFAULT;
         let kept = self.kept_outline(

@@ -490,6 +490,64 @@ mod tests {
         );
     }
 
+    /// A stroked circle (a ring, or a disc where the stroke reaches the
+    /// centre; centred, inside and outside alignments) has every pixel
+    /// within 1/256 of the exact area between its two circles, the same
+    /// bits in bands of 48, 16, 7, 3 and 1 rows.
+    #[test]
+    fn a_ring_is_stroked_by_its_exact_areas_in_every_band_height() {
+        use crate::edge::disc::reference::exact;
+        use crate::path::StrokeAlignment;
+        use crate::style::{Blend, Opacity};
+        let mut rng = Lcg(0x0a22_1f5e_ed00_1234);
+        let mut next = |m: u32| rng.below(u64::from(m)) as i32;
+        let mut worst = 0.0f64;
+        for case in 0..120 {
+            let r = 8 + (next(30 * 1024) >> next(8)) as u32;
+            let c = FinePoint::new(next(72 * 1024) - 4096, next(56 * 1024) - 4096);
+            let w = 1 + (next(12 * 1024) >> next(6)) as u32;
+            let (align, out, inn) = match case % 3 {
+                0 => (
+                    StrokeAlignment::Centre,
+                    f64::from(w) / 2.0,
+                    f64::from(w) / 2.0,
+                ),
+                1 => (StrokeAlignment::Inside, 0.0, f64::from(w)),
+                _ => (StrokeAlignment::Outside, f64::from(w), 0.0),
+            };
+            let style = StrokeStyle::new(w).with_alignment(align);
+            let ring = Circle::new(c, r);
+            let draw = |k: &mut Canvas<'_, '_, 1>| {
+                k.buffer().clear([0]);
+                k.stroke_shape(&ring, &style, [4095], Blend::Over, Opacity::OPAQUE)
+                    .unwrap();
+            };
+            let (whole, _) = frame(64, 48, draw);
+            for rows in [1, 3, 7, 16] {
+                assert_eq!(frame(64, rows, draw).0, whole, "case {case}: {rows} rows");
+            }
+            let (cx, cy) = (f64::from(c.x) / 1024.0, f64::from(c.y) / 1024.0);
+            let ro = (f64::from(r) + out) / 1024.0;
+            let ri = (f64::from(r) - inn) / 1024.0;
+            for (k, &v) in whole.iter().enumerate() {
+                let (x, y) = (k as i32 % 64, k as i32 / 64);
+                let hole = if ri > 0.0 {
+                    exact(cx, cy, ri, x, y)
+                } else {
+                    0.0
+                };
+                let e = exact(cx, cy, ro, x, y) - hole;
+                let d = (f64::from(v) / 4095.0 - e).abs();
+                worst = worst.max(d);
+                assert!(
+                    d <= 1.0 / 256.0 + 0.5 / 4095.0,
+                    "case {case}: r {r} w {w} {align:?} pixel ({x}, {y}) {v} against {e}"
+                );
+            }
+        }
+        std::println!("worst against exact {worst:.6}");
+    }
+
     #[cfg(feature = "embedded-graphics")]
     #[test]
     fn an_embedded_graphics_circle_takes_the_exact_path() {

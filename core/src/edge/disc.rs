@@ -27,9 +27,10 @@
 //! multiplier found once per circle, `k` from a table of 33 values with
 //! linear interpolation (within 4e-4 of the series' sum). Every pixel's
 //! area is so within a few coverage units (1/65536 px) of the exact disc
-//! area, at any radius and sub-pixel centre (`tests/disc_exact.rs` checks
-//! 1/2048 against an f64 formula); every value is a function of the row
-//! alone, so any band height gives the same bits.
+//! area, at any radius and sub-pixel centre (the tests below check 1/4096
+//! px against an f64 formula); every value is a function of the row
+//! alone, so any band height gives the same bits. A ring is its outer
+//! circle walked with `+` and its inner one with `-`.
 //!
 //! Ranges: centre within the fine coordinate range (`|c| <= 2^21` fine,
 //! `2^23` quarter units), radius at most `2^23` quarter units (2048 px):
