@@ -548,6 +548,168 @@ mod tests {
         std::println!("worst against exact {worst:.6}");
     }
 
+    /// The exact (f64) coverage of the `w x h` frame's pixels by the union
+    /// of an annular sector (centre, outer and inner radii, start and
+    /// sweep in radians, clockwise on screen) and discs, px: per pixel row
+    /// the integral over `m` sub-rows (midpoint rule) of the union's
+    /// slice, found exactly (the chords, split where the sector's rays
+    /// cross).
+    fn sector_reference(
+        w: usize,
+        h: usize,
+        c: (f64, f64),
+        (ro, ri): (f64, f64),
+        (a, s): (f64, f64),
+        discs: &[(f64, f64, f64)],
+    ) -> std::vec::Vec<f64> {
+        use core::f64::consts::TAU;
+        let m = 1024;
+        let mut out = std::vec![0.0; w * h];
+        let chord = |v: f64, r: f64| (r * r - v * v).max(0.0).sqrt();
+        for y in 0..h {
+            for k in 0..m {
+                let yy = y as f64 + (k as f64 + 0.5) / m as f64;
+                let v = yy - c.1;
+                let mut iv: std::vec::Vec<(f64, f64)> = std::vec::Vec::new();
+                if v.abs() < ro {
+                    let wo = chord(v, ro);
+                    let mut cuts = std::vec![c.0 - wo, c.0 + wo];
+                    if v.abs() < ri {
+                        let wi = chord(v, ri);
+                        cuts.extend([c.0 - wi, c.0 + wi]);
+                    }
+                    for t in [a, a + s] {
+                        let sn = t.sin();
+                        if sn.abs() > 1e-12 && v / sn > 0.0 {
+                            cuts.push(c.0 + v * t.cos() / sn);
+                        }
+                    }
+                    cuts.sort_by(|p, q| p.partial_cmp(q).unwrap());
+                    for p in cuts.windows(2) {
+                        let (x0, x1) = (p[0].max(c.0 - wo), p[1].min(c.0 + wo));
+                        if x1 <= x0 {
+                            continue;
+                        }
+                        let xm = (x0 + x1) / 2.0;
+                        let d = ((xm - c.0).powi(2) + v * v).sqrt();
+                        let ang = v.atan2(xm - c.0).rem_euclid(TAU);
+                        if d <= ro && d >= ri && (ang - a).rem_euclid(TAU) <= s {
+                            iv.push((x0, x1));
+                        }
+                    }
+                }
+                for &(dx, dy, r) in discs {
+                    let v = yy - dy;
+                    if v.abs() < r {
+                        let wd = chord(v, r);
+                        iv.push((dx - wd, dx + wd));
+                    }
+                }
+                iv.sort_by(|p, q| p.partial_cmp(q).unwrap());
+                let mut merged: std::vec::Vec<(f64, f64)> = std::vec::Vec::new();
+                for (x0, x1) in iv {
+                    match merged.last_mut() {
+                        Some(l) if x0 <= l.1 => l.1 = l.1.max(x1),
+                        _ => merged.push((x0, x1)),
+                    }
+                }
+                for (x0, x1) in merged {
+                    let (lo, hi) = (x0.max(0.0), x1.min(w as f64));
+                    let mut x = lo.floor() as usize;
+                    while (x as f64) < hi && x < w {
+                        let part = hi.min(x as f64 + 1.0) - lo.max(x as f64);
+                        if part > 0.0 {
+                            out[y * w + x] += part / m as f64;
+                        }
+                        x += 1;
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// A stroked arc (butt caps, any alignment; centred round caps) has
+    /// every pixel within 1/256 of the exact area of its annular sector
+    /// (and cap discs), the same bits in bands of 48, 16, 7, 3 and 1 rows.
+    #[test]
+    fn an_arc_is_stroked_by_its_exact_areas_in_every_band_height() {
+        use crate::path::{Arc, Degrees, StrokeAlignment};
+        use crate::style::{Blend, Opacity};
+        let mut rng = Lcg(0xa2c5_0f00_1234_5678);
+        let mut next = |m: u32| rng.below(u64::from(m)) as i32;
+        let mut worst = 0.0f64;
+        let mut drawn = 0;
+        for case in 0..100 {
+            let round = case % 2 == 1;
+            let r = 2048 + next(24 * 1024) as u32;
+            let c = FinePoint::new(8 * 1024 + next(48 * 1024), 8 * 1024 + next(32 * 1024));
+            let (start, mut sweep) = (next(720) - 360, next(700) - 350);
+            let mut wd = 512 + next(8 * 1024) as u32;
+            if round {
+                // Caps the exact path takes: a hole, and ends at least the
+                // width and 2 px apart (a gap of 60 degrees or more).
+                let r = r.max(4096);
+                wd = wd.min(r - 2048);
+                sweep = sweep.clamp(-300, 300);
+            }
+            let r = if round { r.max(4096) } else { r };
+            let (align, out, inn) = match (round, case / 2 % 3) {
+                (false, 1) => (StrokeAlignment::Inside, 0.0, f64::from(wd)),
+                (false, 2) => (StrokeAlignment::Outside, f64::from(wd), 0.0),
+                _ => (
+                    StrokeAlignment::Centre,
+                    f64::from(wd) / 2.0,
+                    f64::from(wd) / 2.0,
+                ),
+            };
+            let cap = if round { LineCap::Round } else { LineCap::Butt };
+            let style = StrokeStyle::new(wd).with_alignment(align).with_cap(cap);
+            let arc = Arc::new(c, r, Degrees::new(start), Degrees::new(sweep));
+            let draw = |k: &mut Canvas<'_, '_, 1>| {
+                k.buffer().clear([0]);
+                k.stroke_shape(&arc, &style, [4095], Blend::Over, Opacity::OPAQUE)
+                    .unwrap();
+            };
+            let (whole, _) = frame(64, 48, draw);
+            for rows in [1, 3, 7, 16] {
+                assert_eq!(frame(64, rows, draw).0, whole, "case {case}: {rows} rows");
+            }
+            let px = |v: f64| v / 1024.0;
+            let (cx, cy, rf) = (px(f64::from(c.x)), px(f64::from(c.y)), px(f64::from(r)));
+            let (ro, ri) = (rf + px(out), (rf - px(inn)).max(0.0));
+            // Clockwise from the start, as the arc runs.
+            let deg = |d: i32| f64::from(d).to_radians();
+            let (a, s) = if sweep < 0 {
+                (deg(start + sweep), deg(-sweep))
+            } else {
+                (deg(start), deg(sweep))
+            };
+            let mut discs = std::vec::Vec::new();
+            if round && sweep != 0 {
+                let hw = px(f64::from(wd)) / 2.0;
+                for t in [a, a + s] {
+                    discs.push((cx + rf * t.cos(), cy + rf * t.sin(), hw));
+                }
+            }
+            let want = sector_reference(64, 48, (cx, cy), (ro, ri), (a, s), &discs);
+            for (k, (&v, &e)) in whole.iter().zip(&want).enumerate() {
+                let d = (f64::from(v) / 4095.0 - e).abs();
+                worst = worst.max(d);
+                assert!(
+                    d <= 1.0 / 256.0 + 0.5 / 4095.0,
+                    "case {case}: r {r} w {wd} {start}+{sweep} {cap:?} {align:?} pixel ({}, {}) \
+                     {v} against {e}",
+                    k % 64,
+                    k / 64
+                );
+            }
+            drawn += usize::from(whole.iter().any(|&v| v != 0));
+        }
+        assert!(drawn > 90);
+        std::println!("worst against exact {worst:.6}");
+    }
+
     #[cfg(feature = "embedded-graphics")]
     #[test]
     fn an_embedded_graphics_circle_takes_the_exact_path() {

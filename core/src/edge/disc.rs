@@ -120,6 +120,24 @@ fn bit_len(d: u64) -> u32 {
     64 - d.leading_zeros()
 }
 
+/// A height and, at a cut, the point's `x` (quarter fine units).
+type End = (i32, Option<i32>);
+
+/// Heights `lo.0 < hi.0` of a part of a circle within one quadrant.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Span {
+    lo: End,
+    hi: End,
+}
+
+/// The parts of a circle an arc keeps: per quadrant (0: `x >= cx, y >=
+/// cy`, then clockwise on screen: 1 lower left, 2 upper left, 3 upper
+/// right) up to two spans.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Arcs {
+    q: [[Option<Span>; 2]; 4],
+}
+
 /// A circle in quarter fine units, with what its walks share.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct CircleEdge {
@@ -255,6 +273,120 @@ impl CircleEdge {
             }
             ya = yb;
             wa = wb;
+        }
+    }
+
+    /// The parts of the circle from the clockwise angle `a` over `s`
+    /// (binary angles, a turn `2^32`, `0 < s < 2^32`), cut at the points
+    /// `pa` and `pb` (quarter fine units: the points at either end, or
+    /// within a unit or two of them): per quadrant up to two intervals of
+    /// heights. Where a part ends at a cut, its end is the
+    /// cut point itself (so that a line from it closes the contour
+    /// exactly); elsewhere it ends where a quadrant does.
+    pub(crate) fn arc_spans(&self, a: i64, s: i64, pa: (i32, i32), pb: (i32, i32)) -> Arcs {
+        const T: i64 = 1 << 32;
+        const QT: i64 = T / 4;
+        let a = a.rem_euclid(T);
+        let mut q = [[None; 2]; 4];
+        for (k, spans) in q.iter_mut().enumerate() {
+            let (k0, k1) = (k as i64 * QT, (k as i64 + 1) * QT);
+            let mut n = 0;
+            for shift in [-T, 0, T] {
+                let (lo, hi) = ((a + shift).max(k0), (a + s + shift).min(k1));
+                if lo >= hi {
+                    continue;
+                }
+                let end = |t: i64| -> End {
+                    if t == a + shift {
+                        (pa.1, Some(pa.0))
+                    } else if t == a + s + shift {
+                        (pb.1, Some(pb.0))
+                    } else {
+                        // A quadrant's end: 0, 90, 180, 270 or 360 degrees.
+                        let y = match (t / QT) & 3 {
+                            1 => self.cy + self.r,
+                            3 => self.cy - self.r,
+                            _ => self.cy,
+                        };
+                        (y, None)
+                    }
+                };
+                let (e0, e1) = (end(lo), end(hi));
+                // Heights within the quadrant's (a cut point may lie a
+                // unit outside the circle).
+                let (y_lo, y_hi) = if k < 2 {
+                    (self.cy, self.cy + self.r)
+                } else {
+                    (self.cy - self.r, self.cy)
+                };
+                let fit = |e: End| (e.0.max(y_lo).min(y_hi), e.1);
+                let (e0, e1) = (fit(e0), fit(e1));
+                let (lo, hi) = if e0.0 <= e1.0 { (e0, e1) } else { (e1, e0) };
+                if lo.0 < hi.0 {
+                    if let Some(slot) = spans.get_mut(n) {
+                        *slot = Some(Span { lo, hi });
+                        n += 1;
+                    }
+                }
+            }
+        }
+        Arcs { q }
+    }
+
+    /// [`walk`](Self::walk) of the parts `spans` of the circle
+    /// ([`arc_spans`](Self::arc_spans)).
+    pub(crate) fn walk_spans<S: DeltaSink>(
+        &self,
+        rows: core::ops::Range<i32>,
+        sign: i32,
+        spans: &Arcs,
+        out: &mut S,
+    ) {
+        let span = self.rows();
+        let (lo, hi) = (rows.start.max(span.start), rows.end.min(span.end));
+        let (top, bot) = (self.cy - self.r, self.cy + self.r);
+        for row in lo..hi {
+            let ya = (row << Q_BITS).max(top);
+            let yb = ((row + 1) << Q_BITS).min(bot);
+            let (mut wa, mut wb) = (None, None);
+            for (k, parts) in spans.q.iter().enumerate() {
+                let (upper, left) = (k >= 2, k == 1 || k == 2);
+                for part in parts.iter().flatten() {
+                    let (y0, y1) = (ya.max(part.lo.0), yb.min(part.hi.0));
+                    if y0 >= y1 {
+                        continue;
+                    }
+                    let x_at = |y: i32, cut: &End, w: &mut Option<i32>| -> i32 {
+                        if let (true, Some(x)) = (y == cut.0, cut.1) {
+                            return x;
+                        }
+                        let h = if y == self.cy {
+                            self.r
+                        } else if y == ya || y == yb {
+                            *w.get_or_insert_with(|| self.half_width(y - self.cy))
+                        } else {
+                            self.half_width(y - self.cy)
+                        };
+                        if left {
+                            self.cx - h
+                        } else {
+                            self.cx + h
+                        }
+                    };
+                    let x0 = if y0 == ya {
+                        x_at(y0, &part.lo, &mut wa)
+                    } else {
+                        x_at(y0, &part.lo, &mut None)
+                    };
+                    let x1 = if y1 == yb {
+                        x_at(y1, &part.hi, &mut wb)
+                    } else {
+                        x_at(y1, &part.hi, &mut None)
+                    };
+                    let sg = if left { sign } else { -sign };
+                    self.side(row, (x0, x1), (y0, y1), upper, left, sg, out);
+                }
+            }
         }
     }
 

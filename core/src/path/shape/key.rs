@@ -61,4 +61,12 @@ impl ShapeKey {
             _ => None,
         }
     }
+
+    /// The arc the key is made of, if it is one.
+    pub(crate) fn arc(&self) -> Option<Arc> {
+        match self.0 {
+            Known::Arc(a) => Some(a),
+            _ => None,
+        }
+    }
 }
