@@ -479,6 +479,12 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
+        if let Some(c) = shape.key().and_then(|k| k.circle()) {
+            let q = u64::from(c.radius) * 4;
+            if let Some(r) = self.exact_circle(c.centre, q, 0, fill, rule, blend, opacity) {
+                return r;
+            }
+        }
         let tol = crate::path::Tolerance::DEFAULT;
         let kept = self.kept_outline(
             || shape.key().map(|k| retained::OutlineKey::fill(k, tol)),
@@ -523,6 +529,28 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
+        if let Some(c) = shape.key().and_then(|k| k.circle()) {
+            // Without dashes, the ring between radii `r + o` and `r - i`
+            // (`Circle::stroke_with`), exact in quarter fine units.
+            let dashed = style.dash.is_some_and(|d| !d.is_solid());
+            if !dashed && c.radius > 0 && style.width > 0 {
+                let (o, i) = style.reach_q1();
+                let r = i64::from(c.radius) * 4;
+                let (outer, inner) = (r + 2 * o, (r - 2 * i).max(0));
+                if let (Ok(outer), Ok(inner)) = (u64::try_from(outer), u64::try_from(inner)) {
+                    let nz = FillRule::NonZero;
+                    let r = self.exact_circle(c.centre, outer, inner, fill, nz, blend, opacity);
+                    if let Some(r) = r {
+                        return r;
+                    }
+                }
+            }
+        }
+        if let Some(a) = shape.key().and_then(|k| k.arc()) {
+            if let Some(r) = self.exact_arc(&a, style, fill, blend, opacity) {
+                return r;
+            }
+        }
         let serial = self.next_serial();
         let tol = crate::path::Tolerance::DEFAULT;
         let kept = self.kept_outline(
@@ -557,6 +585,226 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
                     .map_or(Ok(()), |e| Err(DrawError::Stroke(e)))
             });
         r.inspect_err(|&e| self.skip(serial, e))
+    }
+
+    /// A disc (`inner` 0) or a ring of centre `c` and radii `outer >
+    /// inner` (quarter fine units) by its circles' exact areas
+    /// ([`edge::disc`](crate::edge::disc)), for the exact box model, in
+    /// any paint; `None` for anything else (drawn from its outline).
+    #[allow(clippy::too_many_arguments)]
+    fn exact_circle(
+        &mut self,
+        c: FinePoint,
+        outer: u64,
+        inner: u64,
+        fill: Fill<'_, C>,
+        rule: FillRule,
+        blend: Blend,
+        opacity: Opacity,
+    ) -> Option<Result<(), DrawError>> {
+        use crate::edge::disc::{CircleEdge, MAX_RADIUS_Q};
+        if WalkKind::of(self.style) != WalkKind::Box(AreaMode::Exact) || outer <= inner {
+            return None;
+        }
+        if outer > u64::from(MAX_RADIUS_Q) {
+            return None;
+        }
+        // Its box as its outline's (`paths::shape_bounds`, widened by the
+        // curves' margin), all in range: out of range, the outline path
+        // reports it.
+        let reach = (outer as i32 + 3) / 4 + 16;
+        let b = FineRect {
+            x0: c.x - reach,
+            y0: c.y - reach,
+            x1: c.x + reach,
+            y1: c.y + reach,
+        };
+        if !(FinePoint::new(b.x0, b.y0).in_range() && FinePoint::new(b.x1, b.y1).in_range()) {
+            return None;
+        }
+        let out = CircleEdge::new(c.x * 4, c.y * 4, outer as u32)?;
+        let hole = if inner > 0 {
+            Some(CircleEdge::new(c.x * 4, c.y * 4, inner as u32)?)
+        } else {
+            None
+        };
+        let _serial = self.next_serial();
+        if !self.touches(&b) {
+            return Some(Ok(()));
+        }
+        let band = self.buf.band();
+        let span = out.rows();
+        let rows = span.start.max(band.y0)..span.end.min(band.y0 + i32::from(band.rows));
+        if rows.start >= rows.end {
+            return Some(Ok(()));
+        }
+        let mut d = self.buf.deltas(rows.clone());
+        out.walk(rows.clone(), 1, &mut d);
+        if let Some(h) = hole {
+            h.walk(rows.clone(), -1, &mut d);
+        }
+        let paint = match fill {
+            Fill::Flat(color) => Paint::Flat(color.map(|v| v.min(crate::LIN_MAX))),
+            Fill::Gradient(g) => g.flat().map_or(Paint::Gradient(g), Paint::Flat),
+        };
+        let coverage = match self.edges {
+            Edges::Smooth => Coverage::Rule(rule),
+            e => Coverage::Sharpened(rule, e),
+        };
+        let op = op_of(blend, opacity);
+        self.buf.compose(rows.start, rows.end, coverage, &paint, op);
+        Some(Ok(()))
+    }
+
+    /// A stroked [`Arc`](crate::path::Arc) without dashes, butt caps or
+    /// centred round ones (`Arc::stroke_with`'s annular sector), from its
+    /// circles' exact areas: the outer circle's part `+`, the inner's
+    /// `-`, and the two ends (radial lines, walked as any edge, or the
+    /// caps' half circles), every part cut at the same points so that the
+    /// contour closes exactly. `None` for anything else (and for caps
+    /// that could overlap each other: a gap narrower than the stroke).
+    fn exact_arc(
+        &mut self,
+        arc: &crate::path::Arc,
+        style: &crate::path::StrokeStyle<'_>,
+        fill: Fill<'_, C>,
+        blend: Blend,
+        opacity: Opacity,
+    ) -> Option<Result<(), DrawError>> {
+        use crate::edge::disc::CircleEdge;
+        use crate::path::arc::EllipseFrame;
+        use crate::path::trig::{HALF_TURN, Q30, TURN};
+        use crate::path::vector::{Pt, UNIT_X};
+        use crate::path::LineCap;
+        if WalkKind::of(self.style) != WalkKind::Box(AreaMode::Exact)
+            || style.dash.is_some_and(|d| !d.is_solid())
+            || arc.radius == 0
+            || style.width == 0
+        {
+            return None;
+        }
+        let (t0, s) = crate::path::shape::sector::clockwise(arc.start, arc.sweep);
+        let (o, i) = style.reach_q1();
+        let r4 = i64::from(arc.radius) * 4;
+        let (outer, inner) = (r4 + 2 * o, (r4 - 2 * i).max(0));
+        if s >= TURN {
+            // A whole turn: the ring (its caps lie inside it).
+            let (outer, inner) = (u64::try_from(outer).ok()?, u64::try_from(inner).ok()?);
+            let nz = FillRule::NonZero;
+            return self.exact_circle(arc.centre, outer, inner, fill, nz, blend, opacity);
+        }
+        let round = match style.cap {
+            LineCap::Butt => false,
+            // Centred, leaving a hole (as `Arc::stroke_with`).
+            LineCap::Round if o == i && inner > 0 => true,
+            _ => return None,
+        };
+        if s == 0 || outer > i64::from(crate::edge::disc::MAX_RADIUS_Q) {
+            return None;
+        }
+        let c = arc.centre;
+        let reach = (outer as i32 + 3) / 4 + 16;
+        let b = FineRect {
+            x0: c.x - reach,
+            y0: c.y - reach,
+            x1: c.x + reach,
+            y1: c.y + reach,
+        };
+        if !(FinePoint::new(b.x0, b.y0).in_range() && FinePoint::new(b.x1, b.y1).in_range()) {
+            return None;
+        }
+        // The ends, as `Arc::stroke_with` finds them (fine units).
+        let c_q8 = Pt::new(i64::from(c.x) << 8, i64::from(c.y) << 8);
+        let r_q8 = i64::from(arc.radius) << 8;
+        let (ro, ri) = (r_q8 + (o << 7), (r_q8 - (i << 7)).max(0));
+        let fo = EllipseFrame::with_q8(c_q8, ro, ro, UNIT_X);
+        let fi = EllipseFrame::with_q8(c_q8, ri, ri, UNIT_X);
+        let (tb, q4) = (t0 + s, |p: FinePoint| (p.x * 4, p.y * 4));
+        let (oa, ob) = (fo.point(t0, Q30).to_fine(), fo.point(tb, Q30).to_fine());
+        let (ia, ib) = if inner > 0 {
+            (fi.point(t0, Q30).to_fine(), fi.point(tb, Q30).to_fine())
+        } else {
+            (c, c)
+        };
+        let out_edge = CircleEdge::new(c.x * 4, c.y * 4, u32::try_from(outer).ok()?)?;
+        let out_spans = out_edge.arc_spans(t0, s, q4(oa), q4(ob));
+        let hole = if inner > 0 {
+            let e = CircleEdge::new(c.x * 4, c.y * 4, u32::try_from(inner).ok()?)?;
+            Some((e, e.arc_spans(t0, s, q4(ia), q4(ib))))
+        } else {
+            None
+        };
+        // Round caps: half circles of radius h about the centre line's
+        // ends, from the outer end to the inner one (at the arc's end) and
+        // back (at its start); their ends at least 2 h + 2 px apart.
+        let caps = if round {
+            let mid = EllipseFrame::with_q8(c_q8, r_q8, r_q8, UNIT_X);
+            let q = |p: Pt| {
+                let f = |v: i64| i32::try_from((v + 32) >> 6).ok();
+                Some((f(p.x)?, f(p.y)?))
+            };
+            let (ea, eb) = (q(mid.point_q8(t0))?, q(mid.point_q8(tb))?);
+            let h = u32::try_from(2 * o).ok()?;
+            let (dx, dy) = (i64::from(ea.0 - eb.0), i64::from(ea.1 - eb.1));
+            let apart = 2 * i64::from(h) + 2 * 4096;
+            if dx * dx + dy * dy < apart * apart {
+                return None;
+            }
+            let ca = CircleEdge::new(ea.0, ea.1, h)?;
+            let cb = CircleEdge::new(eb.0, eb.1, h)?;
+            let sa = ca.arc_spans(t0 + HALF_TURN, HALF_TURN, q4(ia), q4(oa));
+            let sb = cb.arc_spans(tb, HALF_TURN, q4(ob), q4(ib));
+            Some([(ca, sa), (cb, sb)])
+        } else {
+            None
+        };
+        let serial = self.next_serial();
+        if !self.touches(&b) {
+            return Some(Ok(()));
+        }
+        let band = self.buf.band();
+        let span = out_edge.rows();
+        let rows = span.start.max(band.y0)..span.end.min(band.y0 + i32::from(band.rows));
+        if rows.start >= rows.end {
+            return Some(Ok(()));
+        }
+        let shape = ShapeBand {
+            serial,
+            mode: AreaMode::Exact,
+            cols: band.column_range(),
+            rows: rows.clone(),
+        };
+        let mut cache = self.cache.as_mut();
+        let mut d = self.buf.deltas(rows.clone());
+        out_edge.walk_spans(rows.clone(), 1, &out_spans, &mut d);
+        if let Some((e, sp)) = &hole {
+            e.walk_spans(rows.clone(), -1, sp, &mut d);
+        }
+        match &caps {
+            Some(caps) => {
+                for (e, sp) in caps {
+                    e.walk_spans(rows.clone(), 1, sp, &mut d);
+                }
+            }
+            None => {
+                // The ends: outward at the start, inward at the end (the
+                // outer part runs counter-clockwise, `walk`'s `+`).
+                for (k, (p0, p1)) in [(0, (oa, ia)), (1, (ib, ob))] {
+                    cache::walk_edge(cache.as_deref_mut(), &shape, k, (p0, p1), &mut d);
+                }
+            }
+        }
+        let paint = match fill {
+            Fill::Flat(color) => Paint::Flat(color.map(|v| v.min(crate::LIN_MAX))),
+            Fill::Gradient(g) => g.flat().map_or(Paint::Gradient(g), Paint::Flat),
+        };
+        let coverage = match self.edges {
+            Edges::Smooth => Coverage::Rule(FillRule::NonZero),
+            e => Coverage::Sharpened(FillRule::NonZero, e),
+        };
+        let op = op_of(blend, opacity);
+        self.buf.compose(rows.start, rows.end, coverage, &paint, op);
+        Some(Ok(()))
     }
 
     /// `paint` of the shape cache's outline of `key` (made from `bounds`

@@ -150,13 +150,13 @@ impl Default for ShapeEntry {
 /// ```
 /// use softedge::canvas::{Canvas, ShapeCache, ShapeEntry};
 /// use softedge::geom::FinePoint;
-/// use softedge::path::{Circle, Segment};
+/// use softedge::path::{Ellipse, Segment};
 /// use softedge::style::{Blend, FillRule, Opacity};
 /// use softedge::{Band, BandBuffer, Bands};
 /// let mut segments = [Segment::default(); 256];
 /// let mut entries = [ShapeEntry::EMPTY; 4];
 /// let (mut acc, mut cover) = ([0i32; 40 * 8], [0i32; BandBuffer::<1>::cover_len(40, 8)]);
-/// let disc = Circle::new(FinePoint::new(20 * 1024, 20 * 1024), 12 * 1024);
+/// let disc = Ellipse::new(FinePoint::new(20 * 1024, 20 * 1024), 12 * 1024, 9 * 1024);
 /// for frame in 0..2 {
 ///     for band in Bands::new(40, 40, 8) {
 ///         let mut buf = BandBuffer::<1>::new(&mut acc, &mut cover, band).unwrap();
@@ -435,11 +435,12 @@ mod tests {
         }
     }
 
-    /// The segments of a disc's fill.
+    /// The segments of a disc's fill (a round ellipse: a `Circle` is
+    /// drawn from its exact areas, never kept).
     fn disc_segments(it: &Item) -> usize {
         let mut store = std::vec![Segment::default(); 4096];
         let mut buf = SegmentBuffer::new(&mut store);
-        crate::path::Shape::fill(&Circle::new(it.c, it.r), &mut buf);
+        crate::path::Shape::fill(&Ellipse::new(it.c, it.r, it.r), &mut buf);
         buf.segments().len()
     }
 
@@ -448,7 +449,7 @@ mod tests {
         let shape: &dyn Fn(&mut Canvas<'_, '_, 1>) = &|c| {
             let mut put = |s: &dyn Drawn| s.draw(c, it);
             match it.kind {
-                0 => put(&Circle::new(it.c, it.r)),
+                0 => put(&Ellipse::new(it.c, it.r, it.r)),
                 1 => {
                     let mut e = Ellipse::new(it.c, it.r, it.r2);
                     e.rotation = Degrees::new(it.a);

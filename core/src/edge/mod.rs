@@ -80,6 +80,7 @@ mod aliased;
 mod area;
 mod canon;
 mod crossing;
+pub(crate) mod disc;
 mod vertical;
 mod walk;
 

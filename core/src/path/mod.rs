@@ -121,11 +121,11 @@ pub mod eg;
 mod errors;
 mod flattener;
 pub mod segment;
-mod shape;
+pub(crate) mod shape;
 pub mod stroke;
 pub mod svg;
 pub(crate) mod trig;
-mod vector;
+pub(crate) mod vector;
 
 pub use angle::Degrees;
 pub use arc::{MAX_ARC_SEGMENTS, MAX_ELLIPSE_SEGMENTS, MAX_RADIUS};

@@ -298,6 +298,9 @@ fn value_arc() -> Arc {
 /// The scene's shapes, in painter's order: panel, gauge track, value arc,
 /// disc, header, two buttons, read-out (8 shapes).
 pub const SCENE_SHAPES: usize = 8;
+/// Of them, drawn from their circles' exact areas (the gauge's track and
+/// value arc, the disc), never described into a shape cache.
+pub const SCENE_CURVES: usize = 3;
 
 /// Draws the scene with softedge into one band's canvas.
 fn softedge_scene_band(c: &mut Canvas<'_, '_, 3, Rgb565>) -> Result<(), DrawError> {
@@ -696,14 +699,26 @@ mod tests {
             softedge_scene(window, &mut s.bufs(), &mut direct).unwrap();
             let mut recorded = Screen(vec![0x1234; 240 * 240]);
             softedge_scene_recorded(window, &mut s.bufs(), &mut recorded).unwrap();
-            assert!(direct.0 == recorded.0, "window {window:?}");
+            // The direct scene's circle and arcs are drawn from their exact
+            // areas, the recorded ones from their flattened outlines (as
+            // the direct ones were before): within a code of each other.
+            let channels = |p: u16| [p >> 11, (p >> 5) & 63, p & 31];
+            let mut moved = 0;
+            for (&a, &b) in direct.0.iter().zip(&recorded.0) {
+                for (x, y) in channels(a).into_iter().zip(channels(b)) {
+                    assert!(x.abs_diff(y) <= 1, "window {window:?}: {a:04x} {b:04x}");
+                }
+                moved += usize::from(a != b);
+            }
+            assert!(moved < 500, "window {window:?}: {moved} pixels");
+            std::println!("window {window:?}: {moved} pixels moved by a code");
             let mut store = [Segment::default(); SCENE_STORE];
             let rec = RecordedCurves::record(&mut store).unwrap();
             for _ in 0..2 {
                 // Once recorded, for any number of frames.
                 let mut again = Screen(vec![0x1234; 240 * 240]);
                 softedge_scene_from(&rec, window, &mut s.bufs(), &mut again).unwrap();
-                assert!(direct.0 == again.0, "window {window:?}");
+                assert!(recorded.0 == again.0, "window {window:?}");
             }
         }
         let mut store = [Segment::default(); SCENE_STORE];
@@ -725,8 +740,8 @@ mod tests {
             softedge_scene(None, &mut s.bufs(), &mut f).unwrap();
             f
         };
-        // The first frame describes the 8 shapes, the next ones none; the
-        // windows in between neither.
+        // The first frame describes the 5 shapes that are not circles or
+        // arcs, the next ones none; the windows in between neither.
         for (k, window) in [None, Some(DIRTY), None, Some(DIRTY)]
             .into_iter()
             .enumerate()
@@ -736,7 +751,11 @@ mod tests {
                 softedge_scene_cached(window, &mut s.bufs(), &mut cache, &mut f).unwrap();
             assert_eq!(
                 described,
-                if k == 0 { SCENE_SHAPES as u32 } else { 0 },
+                if k == 0 {
+                    (SCENE_SHAPES - SCENE_CURVES) as u32
+                } else {
+                    0
+                },
                 "frame {k}"
             );
             assert!(kept > 0);
@@ -752,7 +771,7 @@ mod tests {
             .iter()
             .filter(|e| **e != ShapeEntry::EMPTY)
             .count();
-        assert_eq!(used, SCENE_SHAPES);
+        assert_eq!(used, SCENE_SHAPES - SCENE_CURVES);
     }
 
     #[test]

@@ -52,3 +52,21 @@ keys! {
     RoundedRectangle => Rounded,
     Line => Line,
 }
+
+impl ShapeKey {
+    /// The circle the key is made of, if it is one.
+    pub(crate) fn circle(&self) -> Option<Circle> {
+        match self.0 {
+            Known::Circle(c) => Some(c),
+            _ => None,
+        }
+    }
+
+    /// The arc the key is made of, if it is one.
+    pub(crate) fn arc(&self) -> Option<Arc> {
+        match self.0 {
+            Known::Arc(a) => Some(a),
+            _ => None,
+        }
+    }
+}

@@ -40,7 +40,7 @@ mod ellipse;
 mod key;
 mod polyline;
 mod rect;
-mod sector;
+pub(crate) mod sector;
 
 pub use circle::Circle;
 pub use ellipse::Ellipse;

@@ -14,7 +14,7 @@ use crate::path::stroke::LineJoin;
 /// The start and the non-negative sweep (binary units, at most one turn)
 /// of `start` over `sweep`, turned around when the sweep is negative so
 /// that the arc always runs clockwise.
-fn clockwise(start: Degrees, sweep: Degrees) -> (i64, i64) {
+pub(crate) fn clockwise(start: Degrees, sweep: Degrees) -> (i64, i64) {
     let (t0, s) = (start.binary(), sweep.binary());
     let (t0, s) = if s < 0 { (t0 + s, -s) } else { (t0, s) };
     (t0.rem_euclid(TURN), s.min(TURN))
