@@ -90,6 +90,9 @@ $1 == "image" {
 $1 == "dial_ram" {
     nram++; rslots[nram] = $2; rslotb[nram] = $3; rband[nram] = $4; rdma[nram] = $5; rstack[nram] = $6; rinsns[nram] = $7
 }
+$1 == "dial_rows" {
+    nrows++; drows[nrows] = $2; dband[nrows] = $3; ddma[nrows] = $4; dstack[nrows] = $5; dinsns[nrows] = $6
+}
 $1 == "panel_shape_cache" { pcache_entries = $2; pcache_segments = $3 }
 $1 == "panel" {
     if (!($2 in pseen)) { pseen[$2] = 1; porder[++np] = $2 }
@@ -273,6 +276,16 @@ END {
         for (i = 1; i <= nram; i++) {
             printf "| %s | %s | %s | %s | %s | %s | %s |\n", rslots[i], group(rband[i]), group(rslotb[i]), group(rdma[i]), \
                 group(rstack[i]), group(rband[i] + rslotb[i] + rdma[i] + rstack[i]), group(rinsns[i])
+        }
+    }
+    if (nrows > 0) {
+        printf "\nRAM of the dial scene'"'"'s whole frame on the plain path without a walk cache, by band height: "
+        printf "band buffers, the one-band Rgb565 DMA buffer and the frame'"'"'s stack, bytes, and the frame'"'"'s instructions (32 KiB = 32,768):\n\n"
+        printf "| band rows | band buffers | DMA band | stack of the frame | total | instructions |\n"
+        printf "| ---: | ---: | ---: | ---: | ---: | ---: |\n"
+        for (i = 1; i <= nrows; i++) {
+            printf "| %s | %s | %s | %s | %s | %s |\n", drows[i], group(dband[i]), group(ddma[i]), group(dstack[i]), \
+                group(dband[i] + ddma[i] + dstack[i]), group(dinsns[i])
         }
     }
     printf "\nThe RP2040 firmware'"'"'s panel (boards/rp2040-st7789/src/ui.rs: dial, ticks, needle, arc gauge with round caps, readout, button), "

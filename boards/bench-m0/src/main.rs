@@ -20,6 +20,7 @@
 //! panel <band rows> <band buffer bytes> <whole|partial> <instructions>
 //! image <none|copy64|rotated30|icon48> <instructions> <image pixels>
 //! dial_ram <slots> <slot bytes> <band buffer bytes> <DMA band bytes> <the frame's stack bytes> <instructions>
+//! dial_rows <band rows> <band buffer bytes> <DMA band bytes> <the frame's stack bytes> <instructions>
 //! stack_bytes <n>
 //! done
 //! ```
@@ -501,6 +502,41 @@ fn main() -> ! {
         }
     }
 
+    // The dial's RAM by band height (no walk cache): what a firmware with
+    // less RAM trades for instructions.
+    for rows in DIAL_ROWS {
+        let mut b = Buffers {
+            acc: &mut *bufs.acc,
+            cover: &mut *bufs.cover,
+            out16: &mut *bufs.out16,
+            out8: &mut *bufs.out8,
+            slots3: &mut [],
+            slots1: &mut *bufs.slots1,
+            list3: &mut *bufs.list3,
+        };
+        fw::stack::paint();
+        let here = fw::stack::depth_here();
+        let measured = bench.measure("dial_rows", "full", 0, 0, rows, || {
+            ui::softedge_scene_rows(rows, &mut b).is_ok()
+        });
+        let used = fw::stack::used_bytes();
+        dial_stack = dial_stack.max(used);
+        let stack = used.saturating_sub(here);
+        if let Some((insns, ok)) = measured {
+            Bench::tag(ok, "dial_rows ")
+                .dec(u64::from(rows))
+                .text(" ")
+                .dec(band_bytes(rows))
+                .text(" ")
+                .dec((usize::from(FRAME_ROWS) * usize::from(rows) * 2) as u64)
+                .text(" ")
+                .dec(stack as u64)
+                .text(" ")
+                .dec(insns)
+                .print();
+        }
+    }
+
     Line::new()
         .text("stack_bytes ")
         .dec(high_water.max(dial_stack).max(fw::stack::used_bytes()) as u64)
@@ -534,6 +570,8 @@ fn band_bytes(rows: u16) -> u64 {
 /// Walk-cache slots the dial's RAM is measured with (the last: all the
 /// benchmark has, as its other dial rows use).
 const DIAL_SLOTS: [usize; 5] = [0, 16, 32, 64, SLOTS];
+/// Band heights of the dial's `dial_rows` lines.
+const DIAL_ROWS: [u16; 6] = [16, 8, 6, 5, 4, 2];
 
 /// The first 132 of [`WELL_MEDIUM`]'s triangles (as many as the screen
 /// has, of about its triangles' area, overlapping at random).

@@ -334,6 +334,21 @@ where
     render_scene(&mut r, window, target, softedge_scene_band)
 }
 
+/// The whole softedge scene frame in bands of `rows` rows (at most
+/// [`BAND_ROWS`]) into the one-band DMA buffer `bufs.out16`, without a
+/// walk cache: what the dial's RAM is at each band height.
+pub fn softedge_scene_rows(rows: u16, bufs: &mut Buffers<'_>) -> Result<(), FrameError> {
+    if rows == 0 || rows > BAND_ROWS {
+        return Err(FrameError);
+    }
+    scene_stream(bufs, |b, sink| {
+        let mut r =
+            FrameRenderer::<3>::new(&mut *b.acc, &mut *b.cover, &mut [], FRAME, FRAME, rows)
+                .map_err(|_| FrameError)?;
+        render_scene(&mut r, None, sink, softedge_scene_band)
+    })
+}
+
 /// A softedge scene frame into the one-band DMA buffer `bufs.out16` (what
 /// is measured).
 pub fn softedge_scene_stream(
