@@ -54,44 +54,57 @@ const K_TABLE: [i32; 34] = [
     465, 494, 523, 553, 584, 616, 649, 682, 716, 752, 788, 825, 864, 903,
 ];
 
-/// `floor(sqrt(n))` for `n < 2^50`, two bits at a time, the remainder in
-/// `u32` (it stays below `2 sqrt(n) + 1 < 2^26`).
+/// `sqrt(1 + (j / 64)^2) * 2^16`, `j = 0..=65`: a chord across a whole
+/// pixel, `Q sqrt(1 + (m / Q)^2)` for its other side `m <= Q`.
+const CHORD_TABLE: [u32; 66] = [
+    65536, 65544, 65568, 65608, 65664, 65736, 65823, 65927, 66046, 66181, 66331, 66497, 66678,
+    66874, 67086, 67312, 67553, 67809, 68079, 68363, 68661, 68974, 69300, 69640, 69992, 70359,
+    70738, 71129, 71534, 71950, 72379, 72819, 73271, 73735, 74210, 74696, 75193, 75700, 76218,
+    76745, 77283, 77831, 78388, 78954, 79530, 80115, 80708, 81310, 81920, 82538, 83165, 83799,
+    84441, 85091, 85747, 86411, 87082, 87760, 88444, 89135, 89832, 90536, 91245, 91961, 92682,
+    93409,
+];
+
+/// The length of a chord one of whose sides is a whole pixel (`Q`) and
+/// the other `m <= Q`, quarter fine units (within 0.7 of a unit).
+#[inline]
+fn pixel_chord(m: u32) -> u32 {
+    let (j, f) = ((m >> 6) as usize, m & 63);
+    let a = CHORD_TABLE.get(j).copied().unwrap_or(0);
+    let b = CHORD_TABLE.get(j + 1).copied().unwrap_or(a);
+    (a + (((b - a) * f) >> 6) + 8) >> 4
+}
+
+/// `floor(sqrt(n))` for `n < 2^50`: the root of its top 32 bits (an even
+/// shift) by [`isqrt32`], then the remaining bits two at a time, the
+/// remainder in `u32` (below `2 sqrt(n) + 1 < 2^26`).
 #[inline]
 pub(crate) fn isqrt64(n: u64) -> u32 {
     let hi = (n >> 32) as u32;
-    let lo = n as u32;
-    let mut root: u32 = 0;
-    let mut rem: u32 = 0;
-    // The high word's 9 pairs (bits 49..32 at most), then the low word's 16.
-    if hi != 0 {
-        let mut k = 9u32;
-        while k > 0 && (hi >> (2 * k - 2)) == 0 {
-            k -= 1;
-        }
-        while k > 0 {
-            k -= 1;
-            rem = (rem << 2) | ((hi >> (2 * k)) & 3);
-            let t = (root << 2) | 1;
-            root <<= 1;
-            if rem >= t {
-                rem -= t;
-                root |= 1;
-            }
-        }
-        let mut k = 16u32;
-        while k > 0 {
-            k -= 1;
-            rem = (rem << 2) | ((lo >> (2 * k)) & 3);
-            let t = (root << 2) | 1;
-            root <<= 1;
-            if rem >= t {
-                rem -= t;
-                root |= 1;
-            }
-        }
-        return root;
+    if hi == 0 {
+        return isqrt32(n as u32);
     }
-    isqrt32(lo)
+    // Pairs below the top 32 bits: hi >> 2k == 0, k <= 9.
+    let mut k = 1u32;
+    while k < 15 && (hi >> (2 * k)) != 0 {
+        k += 1;
+    }
+    // In 32-bit words (a variable 64-bit shift is a call on an M0).
+    let lo = n as u32;
+    let top = (hi << (32 - 2 * k)) | (lo >> (2 * k));
+    let mut root = isqrt32(top);
+    let mut rem = top - root * root;
+    while k > 0 {
+        k -= 1;
+        rem = (rem << 2) | ((lo >> (2 * k)) & 3);
+        let t = (root << 2) | 1;
+        root <<= 1;
+        if rem >= t {
+            rem -= t;
+            root |= 1;
+        }
+    }
+    root
 }
 
 /// `floor(sqrt(n))`: the bit-by-bit root, from the highest power of four
@@ -222,7 +235,8 @@ impl CircleEdge {
     fn half_width(&self, v: i32) -> i32 {
         let v = v.unsigned_abs().min(self.r as u32);
         let r = self.r as u32;
-        ((isqrt64(u64::from(r - v) * u64::from(r + v) * 4) + 1) >> 1) as i32
+        // (r - v)(r + v) < 2^48 in halves: no 64-bit multiply on an M0.
+        ((isqrt64(crate::arith::mul_wide(r - v, r + v) << 2) + 1) >> 1) as i32
     }
 
     /// Twice the area of the circular segment over a chord of
@@ -232,7 +246,13 @@ impl CircleEdge {
         let (dx, dy) = (dx.unsigned_abs(), dy.unsigned_abs());
         // Chords of pieces within a pixel: below 2^13 each.
         let l2 = dx * dx + dy * dy;
-        let l = isqrt32(l2);
+        // Most pieces cross a whole pixel, across or down.
+        let q = Q as u32;
+        let l = match (dx == q, dy == q) {
+            (true, _) if dy <= q => pixel_chord(dy),
+            (_, true) if dx <= q => pixel_chord(dx),
+            _ => isqrt32(l2),
+        };
         let w2 = (l2 >> self.t0).min(W2_MAX);
         let v = ((w2 * l) >> self.t1).min(V_MAX);
         let s = (v * self.m_seg) >> self.sh_seg;
@@ -589,6 +609,14 @@ mod tests {
             y += band;
         }
         w.coverage()
+    }
+
+    #[test]
+    fn whole_pixel_chords_are_within_a_unit() {
+        for m in 0..=4096u32 {
+            let l = f64::from(m).hypot(4096.0);
+            assert!((f64::from(pixel_chord(m)) - l).abs() < 0.7, "{m}");
+        }
     }
 
     #[test]
