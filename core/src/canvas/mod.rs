@@ -613,11 +613,12 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         // curves' margin), all in range: out of range, the outline path
         // reports it.
         let reach = (outer as i32 + 3) / 4 + 16;
+        // Saturating: a centre near the `i32` ends is out of range anyway.
         let b = FineRect {
-            x0: c.x - reach,
-            y0: c.y - reach,
-            x1: c.x + reach,
-            y1: c.y + reach,
+            x0: c.x.saturating_sub(reach),
+            y0: c.y.saturating_sub(reach),
+            x1: c.x.saturating_add(reach),
+            y1: c.y.saturating_add(reach),
         };
         if !(FinePoint::new(b.x0, b.y0).in_range() && FinePoint::new(b.x1, b.y1).in_range()) {
             return None;
@@ -704,11 +705,12 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         }
         let c = arc.centre;
         let reach = (outer as i32 + 3) / 4 + 16;
+        // Saturating: a centre near the `i32` ends is out of range anyway.
         let b = FineRect {
-            x0: c.x - reach,
-            y0: c.y - reach,
-            x1: c.x + reach,
-            y1: c.y + reach,
+            x0: c.x.saturating_sub(reach),
+            y0: c.y.saturating_sub(reach),
+            x1: c.x.saturating_add(reach),
+            y1: c.y.saturating_add(reach),
         };
         if !(FinePoint::new(b.x0, b.y0).in_range() && FinePoint::new(b.x1, b.y1).in_range()) {
             return None;
