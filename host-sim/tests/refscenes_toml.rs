@@ -9,11 +9,13 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::process::Command;
 
+use softedge::path::LineCap;
 use softedge::scene3d::{Projection, Shape as Solid};
 use softedge::{PixelModel, SubPoint};
 use softedge_refscenes::stream::Format;
 use softedge_refscenes::{
-    render_crc, Buffers, Fill, Scene, Shape, ACC_LEN, COVERED_LEN, COVER_LEN, DEPTH_LEN, SCENES,
+    render_crc, Buffers, Fill, Pen, Scene, Shape, ACC_LEN, COVERED_LEN, COVER_LEN, DEPTH_LEN,
+    SCENES,
 };
 
 fn px(v: i32) -> String {
@@ -40,6 +42,39 @@ fn colors(scene: &Scene, cs: &[[u16; 3]]) -> String {
 
 fn num(v: f64) -> String {
     format!("{v:?}")
+}
+
+/// Fine units (1/1024 px) to pixels, exact in binary and in decimal.
+fn fine(v: i64) -> String {
+    num(v as f64 / 1024.0)
+}
+
+fn fine_point(p: softedge::geom::FinePoint) -> String {
+    format!("[{}, {}]", fine(p.x.into()), fine(p.y.into()))
+}
+
+/// Degrees from 1/65536 degree, exact (read back by `I16F16::from_num`).
+fn degrees(d: softedge::path::Degrees) -> String {
+    num(f64::from(d.bits()) / 65536.0)
+}
+
+/// The paint keys of a circle or an arc.
+fn pen(scene: &Scene, pen: Pen, c: [u16; 3]) -> String {
+    match pen {
+        Pen::Fill => format!("color = {}", color(scene, c)),
+        Pen::Stroke { width, cap } => {
+            let cap = match cap {
+                LineCap::Butt => "butt",
+                LineCap::Round => "round",
+                LineCap::Square => "square",
+            };
+            format!(
+                "stroke_color = {}\nstroke_width = {}\ncap = \"{cap}\"",
+                color(scene, c),
+                fine(width.into())
+            )
+        }
+    }
 }
 
 fn to_toml(scene: &Scene) -> String {
@@ -69,9 +104,16 @@ fn to_toml(scene: &Scene) -> String {
         scene.width, scene.height
     );
     let _ = writeln!(t, "background = {}", color(scene, scene.background));
+    // Circles and arcs are composed over (painter's order), everything
+    // else added: a scene holds one kind or the other (a refscenes test).
+    let blend = if scene.shapes.iter().any(Shape::is_over) {
+        "over"
+    } else {
+        "add"
+    };
     let _ = writeln!(
         t,
-        "[render]\nantialias = {}\npixel_model = \"{model}\"\ngamma = 2.2\nband_rows = {}\nblend = \"add\"",
+        "[render]\nantialias = {}\npixel_model = \"{model}\"\ngamma = 2.2\nband_rows = {}\nblend = \"{blend}\"",
         scene.style.antialias, scene.band_rows
     );
     if scene.zbuffer {
@@ -131,6 +173,26 @@ fn to_toml(scene: &Scene) -> String {
                     num(f64::from(i.scale.1) / 65536.0),
                     num(f64::from(i.rotate) / 65536.0),
                     num(f64::from(i.opacity) / 4096.0),
+                );
+            }
+            Shape::Circle(c, p, col) => {
+                let _ = writeln!(
+                    t,
+                    "[[circle]]\ncentre = {}\nradius = {}\n{}",
+                    fine_point(c.centre),
+                    fine(c.radius.into()),
+                    pen(scene, p, col)
+                );
+            }
+            Shape::Arc(a, p, col) => {
+                let _ = writeln!(
+                    t,
+                    "[[arc]]\ncentre = {}\nradius = {}\nstart = {}\nsweep = {}\n{}",
+                    fine_point(a.centre),
+                    fine(a.radius.into()),
+                    degrees(a.start),
+                    degrees(a.sweep),
+                    pen(scene, p, col)
                 );
             }
             Shape::Object(o) => {

@@ -34,10 +34,11 @@ pub mod stream;
 
 pub use crc::{crc32, Crc32, POLY_REFLECTED, TABLE as CRC_TABLE};
 pub use scenes::{
-    ALIASED, GOURAUD, IMAGE, LIMITS, LINES, MESH, ONEBIT, SEEDBOX, SPHERE3D, ZBUFFER,
+    ALIASED, DIAL, GOURAUD, IMAGE, LIMITS, LINES, MESH, ONEBIT, SEEDBOX, SPHERE3D, ZBUFFER,
 };
 
 use softedge::hsr::{zbuffer_passes, DepthBuffer, DepthTriangle, HsrError, ZPass};
+use softedge::path;
 use softedge::scene3d;
 use softedge::{
     BandBuffer, BandError, Bands, DrawError, Line, Polygon, PolygonColors, RenderStyle, SubPoint,
@@ -52,6 +53,7 @@ pub const MAX_SCENE_WIDTH: u16 = 96;
 /// Every reference scene, in the order the listings print them.
 pub const SCENES: &[&Scene] = &[
     &GOURAUD, &MESH, &LINES, &ALIASED, &ONEBIT, &SEEDBOX, &LIMITS, &SPHERE3D, &ZBUFFER, &IMAGE,
+    &DIAL,
 ];
 
 /// `i32`s of `acc` that every scene of [`SCENES`] fits in.
@@ -182,8 +184,40 @@ pub enum Shape {
     /// with the z-buffer.
     Depth([SubPoint; 3], [[u16; 3]; 3], [u16; 3]),
     /// An image (`softedge::image::AaImage`), added to the band (seed
-    /// 000's accumulation, as every other shape here).
+    /// 000's accumulation, as every shape above).
     Image(&'static ImageShape),
+    /// A circle (`softedge::path::Circle`) filled, or stroked (a ring),
+    /// through a canvas, composed over what is drawn before it (painter's
+    /// order, `Blend::Over`: a scene with circles or arcs holds no shapes
+    /// that add, and its scene file says `blend = "over"`). RGB scenes
+    /// only, as [`Shape::Image`].
+    Circle(path::Circle, Pen, [u16; 3]),
+    /// An arc (`softedge::path::Arc`), stroked (or filled: the region
+    /// between the arc and its chord) through a canvas, over, as
+    /// [`Shape::Circle`].
+    Arc(path::Arc, Pen, [u16; 3]),
+}
+
+/// How a [`Shape::Circle`] or [`Shape::Arc`] is painted.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Pen {
+    /// Filled (non-zero rule).
+    Fill,
+    /// Stroked, solid and centred, miter joins.
+    Stroke {
+        /// Width, 1/1024 px.
+        width: u32,
+        /// The caps of an open outline.
+        cap: path::LineCap,
+    },
+}
+
+impl Shape {
+    /// Whether the shape is composed over what is drawn before it
+    /// ([`Shape::Circle`], [`Shape::Arc`]) rather than added.
+    pub const fn is_over(&self) -> bool {
+        matches!(self, Shape::Circle(..) | Shape::Arc(..))
+    }
 }
 
 /// An image of a scene: 8-bit RGBA texels (straight alpha, rows top to
@@ -315,6 +349,9 @@ pub fn render<const C: usize>(
                 match shape {
                     Shape::Object(o) => draw_object(o, scene, &mut buf)?,
                     Shape::Image(i) => draw_image(i, &mut buf, &scene.style)?,
+                    Shape::Circle(..) | Shape::Arc(..) => {
+                        draw_round(shape, &mut buf, &scene.style)?
+                    }
                     _ => draw(shape, &mut buf, &scene.style)?,
                 }
             }
@@ -396,9 +433,9 @@ fn draw<const C: usize>(
             let colors = colors.get(..n).unwrap_or(&[]);
             Polygon::new(v, PolygonColors::PerVertex(colors)).draw(buf, style)
         }
-        // Drawn by `draw_object`, which needs the scene's frame, and by
-        // `draw_image`.
-        Shape::Object(_) | Shape::Image(_) => Ok(()),
+        // Drawn by `draw_object`, which needs the scene's frame, by
+        // `draw_image` and by `draw_round`.
+        Shape::Object(_) | Shape::Image(_) | Shape::Circle(..) | Shape::Arc(..) => Ok(()),
         // Without the z-buffer, a depth triangle is a plain triangle.
         Shape::Depth(v, c, _) => Triangle::new(v, c.map(channels)).draw(buf, style),
     }
@@ -433,6 +470,51 @@ fn draw_image<const C: usize>(
         .blend(softedge::style::Blend::Add)
         .name(i.file);
     canvas.draw_image(&img)
+}
+
+/// Draws a circle or an arc into the band through a canvas, over (the
+/// way an application draws them: circles, rings and stroked arcs take
+/// core's exact circle areas). RGB scenes only (a gray scene draws none),
+/// for the Cortex-M0 firmware's flash, as [`draw_image`].
+#[inline(never)]
+fn draw_round<const C: usize>(
+    shape: &Shape,
+    buf: &mut BandBuffer<'_, C>,
+    style: &RenderStyle,
+) -> Result<(), DrawError> {
+    if C != 3 {
+        return Ok(());
+    }
+    let mut canvas = softedge::canvas::Canvas::new(buf, None);
+    canvas.set_style(*style);
+    match *shape {
+        Shape::Circle(ref c, pen, color) => paint_round(&mut canvas, c, pen, channels(color)),
+        Shape::Arc(ref a, pen, color) => paint_round(&mut canvas, a, pen, channels(color)),
+        _ => Ok(()),
+    }
+}
+
+/// Fills or strokes `shape` over the canvas, opaque.
+fn paint_round<const C: usize, S: path::Shape>(
+    canvas: &mut softedge::canvas::Canvas<'_, '_, C>,
+    shape: &S,
+    pen: Pen,
+    color: [u16; C],
+) -> Result<(), DrawError> {
+    use softedge::style::{Blend, FillRule, Opacity};
+    match pen {
+        Pen::Fill => canvas.fill_shape(
+            shape,
+            color,
+            FillRule::NonZero,
+            Blend::Over,
+            Opacity::OPAQUE,
+        ),
+        Pen::Stroke { width, cap } => {
+            let style = path::StrokeStyle::new(width).with_cap(cap);
+            canvas.stroke_shape(shape, &style, color, Blend::Over, Opacity::OPAQUE)
+        }
+    }
 }
 
 /// Builds, lights and projects a 3D object, drawing its front faces into
@@ -581,6 +663,80 @@ mod tests {
                     scene.name
                 );
             }
+        });
+    }
+
+    /// A scene file has one blend for all its shapes: a scene with circles
+    /// or arcs (composed over) holds nothing that adds, is RGB (gray
+    /// scenes draw no circles) and has no z-buffer.
+    #[test]
+    fn scenes_with_circles_or_arcs_hold_only_those() {
+        for scene in SCENES {
+            if scene.shapes.iter().any(Shape::is_over) {
+                assert!(scene.shapes.iter().all(Shape::is_over), "{}", scene.name);
+                assert_eq!(scene.channels, 3, "{}", scene.name);
+                assert!(!scene.zbuffer, "{}", scene.name);
+            }
+        }
+    }
+
+    /// The dial's circles and arcs drawn over, one by one, each against
+    /// the frame without it: every one of them changes some pixel (none is
+    /// hidden or off the frame).
+    #[test]
+    fn every_shape_of_the_dial_shows() {
+        with_buffers(|bufs| {
+            let all = render_crc(&DIAL, bufs).unwrap();
+            for k in 0..DIAL.shapes.len() {
+                extern crate std;
+                let mut shapes = std::vec::Vec::from(DIAL.shapes);
+                shapes.remove(k);
+                let without = Scene {
+                    shapes: std::boxed::Box::leak(shapes.into_boxed_slice()),
+                    ..DIAL
+                };
+                assert_ne!(render_crc(&without, bufs).unwrap(), all, "shape {k}");
+            }
+        });
+    }
+
+    /// Every circle and arc of the dial takes core's exact circle areas
+    /// (`edge::disc`), not the flattened outline: drawn with a shape cache
+    /// (room for 4096 segments), none is described into it (a
+    /// square-capped arc, which has no exact path, is: the control).
+    #[test]
+    fn the_dial_draws_its_circles_and_arcs_exactly() {
+        use softedge::canvas::{Canvas, ShapeCache, ShapeEntry};
+        use softedge::Band;
+        let described = |shape: &Shape, bufs: &mut Buffers<'_>| {
+            let band = Band::new(DIAL.width, 0, DIAL.height);
+            let mut buf = BandBuffer::<3>::new(bufs.acc, bufs.cover, band).unwrap();
+            buf.clear(DIAL.background);
+            let mut segments = [path::Segment::default(); 4096];
+            let mut entries = [ShapeEntry::EMPTY; 2];
+            let shapes = ShapeCache::new(&mut segments, &mut entries, 0);
+            let mut canvas = Canvas::new(&mut buf, None).with_shapes(shapes);
+            canvas.set_style(DIAL.style);
+            match *shape {
+                Shape::Circle(ref c, pen, color) => paint_round(&mut canvas, c, pen, color),
+                Shape::Arc(ref a, pen, color) => paint_round(&mut canvas, a, pen, color),
+                _ => panic!("not a circle or an arc"),
+            }
+            .unwrap();
+            canvas.shape_stats().1
+        };
+        with_buffers(|bufs| {
+            for (k, shape) in DIAL.shapes.iter().enumerate() {
+                assert_eq!(described(shape, bufs), 0, "shape {k}: {shape:?}");
+            }
+            let Shape::Arc(a, _, color) = DIAL.shapes[2] else {
+                panic!("the track is an arc")
+            };
+            let square = Pen::Stroke {
+                width: 5 * 1024,
+                cap: path::LineCap::Square,
+            };
+            assert_eq!(described(&Shape::Arc(a, square, color), bufs), 1);
         });
     }
 

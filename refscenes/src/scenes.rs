@@ -6,7 +6,9 @@
 //! `ACC_LEN + COVER_LEN` `i32`s (about 6 KiB) of band buffers.
 
 use crate::stream::Format;
-use crate::{Fill, Object3d, Scene, Shape};
+use crate::{Fill, Object3d, Pen, Scene, Shape};
+use softedge::geom::FinePoint;
+use softedge::path::{Arc, Circle, Degrees, LineCap};
 use softedge::scene3d;
 use softedge::{PixelModel, RenderStyle, SubPoint, LIN_MAX, SUB_ONE};
 
@@ -685,5 +687,142 @@ pub const IMAGE: Scene = Scene {
     style: AA,
     background: [200, 300, 600],
     shapes: &IMAGE_SHAPES,
+    zbuffer: false,
+};
+
+// ------------------------------------------------------------------- dial
+
+/// Fine units (1/1024 px) per pixel, for the circles and arcs below.
+const P: i32 = softedge::geom::FINE_ONE;
+
+/// A point from fine units.
+const fn fine(x: i32, y: i32) -> FinePoint {
+    FinePoint::new(x, y)
+}
+
+/// Degrees from 1/65536 degree.
+const fn deg(bits: i32) -> Degrees {
+    Degrees::from_bits(bits)
+}
+
+/// A centred stroke of `width` fine units.
+const fn stroke(width: i32, cap: LineCap) -> Pen {
+    Pen::Stroke {
+        width: width as u32,
+        cap,
+    }
+}
+
+/// The dial's centre, (47.3, 31.6) px to the fine grid.
+const DIAL_CENTRE: FinePoint = fine(47 * P + 307, 31 * P + 614);
+
+const DIAL_SHAPES: [Shape; 12] = [
+    // The face: sub-pixel centre, radius 27.7 px.
+    Shape::Circle(
+        Circle::new(DIAL_CENTRE, (27 * P + 717) as u32),
+        Pen::Fill,
+        [700, 760, 900],
+    ),
+    // Its bezel, a ring of 2.25 px about radius 29.5 px (reaching row 62).
+    Shape::Circle(
+        Circle::new(DIAL_CENTRE, (29 * P + P / 2) as u32),
+        stroke(2 * P + P / 4, LineCap::Butt),
+        [3300, 3300, 3500],
+    ),
+    // The gauge's track: 270 degrees clockwise from 135, 5 px wide, butt.
+    Shape::Arc(
+        Arc::new(DIAL_CENTRE, 22 * P as u32, deg(135 << 16), deg(270 << 16)),
+        stroke(5 * P, LineCap::Butt),
+        [300, 330, 400],
+    ),
+    // Its value over it: 170.5 degrees, round caps.
+    Shape::Arc(
+        Arc::new(
+            DIAL_CENTRE,
+            22 * P as u32,
+            deg(135 << 16),
+            deg((170 << 16) + (1 << 15)),
+        ),
+        stroke(5 * P, LineCap::Round),
+        [F, 2400, 300],
+    ),
+    // An inner scale: round caps, 4.5 px wide, radius 14.6 px, 262.25
+    // degrees from 138.5, drawn counter-clockwise from its far end.
+    Shape::Arc(
+        Arc::new(
+            DIAL_CENTRE,
+            (14 * P + 614) as u32,
+            deg((40 << 16) + (3 << 14)),
+            deg(-((262 << 16) + (1 << 14))),
+        ),
+        stroke(4 * P + P / 2, LineCap::Round),
+        [600, 2600, 3000],
+    ),
+    // A butt-capped arc of 4 px across the face's edge, 98 degrees.
+    Shape::Arc(
+        Arc::new(
+            DIAL_CENTRE,
+            (27 * P + 300) as u32,
+            deg(200 << 16),
+            deg(98 << 16),
+        ),
+        stroke(4 * P, LineCap::Butt),
+        [F, F, F],
+    ),
+    // The hub.
+    Shape::Circle(
+        Circle::new(DIAL_CENTRE, (3 * P + 100) as u32),
+        Pen::Fill,
+        [F, F, F],
+    ),
+    // Small discs: one centred 3/1024 px below the boundary of two bands
+    // (row 10, the scene's bands being 2 rows), one radius 0.7 px across
+    // the boundary at row 56, one of 1.9 px centred on row 40.
+    Shape::Circle(
+        Circle::new(fine(8 * P + 410, 10 * P + 3), (P + 700) as u32),
+        Pen::Fill,
+        [F, 600, 600],
+    ),
+    Shape::Circle(
+        Circle::new(fine(6 * P + 512, 56 * P + 77), 717),
+        Pen::Fill,
+        [F, F, 200],
+    ),
+    Shape::Circle(
+        Circle::new(fine(87 * P + 900, 40 * P), (P + 922) as u32),
+        Pen::Fill,
+        [400, F, 900],
+    ),
+    // Cut by the frame: a disc across its top right corner, and a ring
+    // (1.5 px) across its left edge at the bottom.
+    Shape::Circle(
+        Circle::new(fine(93 * P + 512, 3 * P + 205), (7 * P + 307) as u32),
+        Pen::Fill,
+        [2400, 900, F],
+    ),
+    Shape::Circle(
+        Circle::new(fine(-(2 * P + 307), 57 * P + 100), (6 * P + 205) as u32),
+        stroke(3 * P / 2, LineCap::Butt),
+        [F, 1600, 400],
+    ),
+];
+
+/// A gauge dial of circles and arcs drawn through the canvas, in painter's
+/// order over the background (issue 32: core's exact circle areas on every
+/// target): a face (a filled disc of sub-pixel centre and radius), a bezel
+/// ring, a 270-degree butt-capped track, a round-capped value arc over it,
+/// a counter-clockwise round-capped inner scale, a butt arc across the
+/// face's edge, the hub, small discs at band boundaries, a disc and a ring
+/// cut by the frame, RGB565 in 2-row bands.
+pub const DIAL: Scene = Scene {
+    name: "dial",
+    width: 96,
+    height: 64,
+    channels: 3,
+    format: Format::Rgb565,
+    band_rows: 2,
+    style: AA,
+    background: [120, 140, 220],
+    shapes: &DIAL_SHAPES,
     zbuffer: false,
 };

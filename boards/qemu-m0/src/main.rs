@@ -1,6 +1,8 @@
-//! Renders every softedge reference scene on a Cortex-M0 (nRF51 of the BBC micro:bit)
-//! and prints the CRCs, instruction counts and stack depth over semihosting
-//! (see `softedge-board-common`). `cargo run --release` runs it in QEMU.
+//! Renders every softedge reference scene as Cortex-M0 code (thumbv6m, in
+//! the 16 KiB of RAM of the BBC micro:bit's nRF51; run on QEMU's MPS2
+//! AN385, whose code memory holds it: see `memory.x`) and prints the
+//! CRCs, instruction counts and stack depth over semihosting (see
+//! `softedge-board-common`). `cargo run --release` runs it in QEMU.
 #![no_std]
 #![no_main]
 

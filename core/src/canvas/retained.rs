@@ -355,8 +355,22 @@ impl<'a> ShapeCache<'a> {
             .min_by_key(|e| e.start)
         {
             let (start, len) = (e.start as usize, e.len as usize);
+            // Kept outlines end within the segments and do not overlap, so
+            // `pos <= start` and the move stays inside; checked all the
+            // same (an outline that did not would be dropped), which keeps
+            // `copy_within`'s panics out of the firmware.
+            if pos > start || start.saturating_add(len) > self.segments.len() {
+                *e = ShapeEntry::EMPTY;
+                continue;
+            }
             e.start = pos as u32;
-            self.segments.copy_within(start..start + len, pos);
+            // Forwards, as the source starts at or after the destination.
+            for k in 0..len {
+                let v = self.segments.get(start + k).copied();
+                if let (Some(v), Some(d)) = (v, self.segments.get_mut(pos + k)) {
+                    *d = v;
+                }
+            }
             pos += len;
         }
         pos < before

@@ -196,7 +196,8 @@ fn scale_q30(a: i64, x: i64) -> i64 {
 /// `8..=MAX_ELLIPSE_SEGMENTS`.
 pub(crate) fn full_count(r: i64, tol: Tolerance) -> u32 {
     let tol = u64::from(tol.fine());
-    let q = (7 * r.max(0) as u64).div_ceil(2 * tol);
+    // `Tolerance` is at least 1; `max` keeps the division's panic out.
+    let q = (7 * r.max(0) as u64).div_ceil((2 * tol).max(1));
     let n0 = super::trig::ceil_sqrt_u64(q).max(1);
     let n = n0.div_ceil(8) * 8;
     n.clamp(8, u64::from(MAX_ELLIPSE_SEGMENTS)) as u32
@@ -222,7 +223,8 @@ pub(crate) fn arc_count(r: i64, sweep: i64, tol: Tolerance) -> u32 {
     // m^2 >= 9 s^2 r / (50 tol), s in radians: s_rad = s * 2 pi / 2^32.
     let s_rad_q31 = super::trig::radians_q31(s as i64) as u128; // < 2^34
     let num = s_rad_q31 * s_rad_q31 * 9 * r.max(0) as u128; // < 2^68 * 9 * 2^23
-    let den = (50 * u128::from(tol.fine())) << 62;
+                                                            // `Tolerance` is at least 1; `max` keeps the division's panic out.
+    let den = (50 * u128::from(tol.fine().max(1))) << 62;
     let q = num.div_ceil(den).min(1 << 40) as u64;
     let by_dev = super::trig::ceil_sqrt_u64(q);
     by_angle.max(by_dev).clamp(1, u64::from(MAX_ARC_SEGMENTS)) as u32
@@ -684,7 +686,9 @@ pub(crate) fn arc_cubics<P: PathSink + ?Sized>(
         let phi = tb - ta;
         // k = 4/3 tan(phi/4) in Q30 (|phi| <= a quarter: |k| < 0.56).
         let (c4, s4) = cos_sin((phi / 4) as u32);
-        let k = if c4 == 0 { 0 } else { (s4 << 30) / c4 * 4 / 3 };
+        // |s4| <= 2^30, so the quotient never overflows; `checked_div`
+        // says so to the compiler (and gives 0 for c4 == 0).
+        let k = (s4 << 30).checked_div(c4).unwrap_or(0) * 4 / 3;
         let c1 = (pa.0 - ((k * pa.1) >> 30), pa.1 + ((k * pa.0) >> 30));
         let c2 = (pb.0 + ((k * pb.1) >> 30), pb.1 - ((k * pb.0) >> 30));
         let p_end = if i == pieces {

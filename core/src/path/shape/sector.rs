@@ -135,7 +135,9 @@ impl Shape for Arc {
                 LineCap::Square => {
                     // The corners, h sqrt 2 from the end at 45 degrees
                     // either side of the tangent (h <= 2^29: 2 h^2 < 2^60).
-                    let d = (2 * h * h).isqrt();
+                    // (Unsigned: a signed `isqrt` keeps a panic for
+                    // negative arguments in the firmware.)
+                    let d = (2 * h * h).unsigned_abs().isqrt() as i64;
                     let f = EllipseFrame::with_q8(end, d, d, UNIT_X);
                     out.vertex(f.point(a + TURN / 8, Q30));
                     out.vertex(f.point(a + 3 * TURN / 8, Q30));
