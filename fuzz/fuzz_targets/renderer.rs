@@ -9,8 +9,9 @@
 //! Oracles that can fail:
 //! - band invariance: the same pixels and the same report in bands of
 //!   16, 3 and 1 rows;
-//! - walk-cache invariance: the same pixels with and without walk-cache
-//!   slots;
+//! - cache invariance: the same pixels with and without walk-cache
+//!   slots, and with a shape cache (of a size that may overflow) over two
+//!   frames that share it;
 //! - window = frame: `render_window` of a sub-rectangle gives that part
 //!   of the whole frame, and sends nothing outside it;
 //! - rejected shapes reported, the rest drawn: every drawing the canvas
@@ -31,8 +32,9 @@ use embedded_graphics::primitives::{
 };
 use embedded_graphics::text::Text;
 use libfuzzer_sys::fuzz_target;
+use softedge::canvas::ShapeEntry;
 use softedge::path::svg::SvgPath;
-use softedge::path::StrokeAlignment;
+use softedge::path::{Segment, StrokeAlignment};
 use softedge::prelude::*;
 use softedge::style::{Gradient, Offset, Stop};
 use softedge::text::bundled::SANS_16;
@@ -391,12 +393,28 @@ impl Scene<'_> {
     /// Renders in bands of `rows`, with `slots` walk-cache slots, the
     /// whole frame or `window`, leaving out the items `alive` says.
     fn render(&self, rows: u16, slots: usize, window: Option<Rectangle>, alive: &[bool]) -> Frame {
+        self.render_cached(rows, slots, window, alive, None)
+    }
+
+    /// [`render`](Self::render), with a shape cache over `shapes` (kept
+    /// from frame to frame by the caller).
+    fn render_cached(
+        &self,
+        rows: u16,
+        slots: usize,
+        window: Option<Rectangle>,
+        alive: &[bool],
+        shapes: Option<(&mut [Segment], &mut [ShapeEntry])>,
+    ) -> Frame {
         let rows = rows.clamp(1, self.h);
         let mut acc = vec![0i32; BandBuffer::<3>::acc_len(self.w, rows)];
         let mut cover = vec![0i32; BandBuffer::<3>::cover_len(self.w, rows)];
         let mut slot_store = vec![WalkSlot::<3>::EMPTY; slots];
         let mut r = Renderer::new(&mut acc, &mut cover, &mut slot_store, self.w, self.h, rows)
             .expect("a valid frame");
+        if let Some((segments, entries)) = shapes {
+            r = r.with_shape_cache(segments, entries);
+        }
         let mut store = [ListedTriangle::<3>::EMPTY; LIST];
         let mut list = TriangleList::new(&mut store);
         for (v, cs) in self.tris {
@@ -433,6 +451,8 @@ fuzz_target!(|data: &[u8]| {
     let mut inp = Input::new(data);
     let (w, h) = (inp.side(40), inp.side(32));
     let slots = [0, 4, 64][usize::from(inp.u8() % 3)];
+    let cache_segments = [16, 256, 4096][usize::from(inp.u8() % 3)];
+    let cache_entries = 1 + usize::from(inp.u8() % 8);
     let mut items = Vec::new();
     let n = usize::from(inp.u8()) % (MAX_ITEMS + 1);
     for _ in 0..n {
@@ -488,6 +508,22 @@ fuzz_target!(|data: &[u8]| {
         assert_eq!(
             frame.rejected, other.rejected,
             "other rejections in bands of {rows}"
+        );
+    }
+
+    // Shape-cache invariance, over two frames sharing the cache (the
+    // second draws from what the first kept; small caches overflow and
+    // evict).
+    let mut segments = vec![Segment::ZERO; cache_segments];
+    let mut entries = vec![ShapeEntry::EMPTY; cache_entries];
+    for pass in 0..2 {
+        let cached = scene.render_cached(3, slots, None, &all, Some((&mut segments, &mut entries)));
+        if let Some(p) = diff(&frame.px, &cached.px, w) {
+            panic!("shape cache ({cache_segments} segments, {cache_entries} entries), frame {pass}: pixel {p:?} differs");
+        }
+        assert_eq!(
+            frame.skipped, cached.skipped,
+            "the report differs with a shape cache"
         );
     }
 

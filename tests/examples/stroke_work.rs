@@ -1,7 +1,7 @@
 //! Issue #36, G3: the issue's dashed strokes rendered through the
 //! Renderer in 1-row bands, for measuring with callgrind:
 //! `valgrind --tool=callgrind target/release/examples/stroke_work a [row]`
-//! (`a`, `b`, `c`, or `d`: the frame in 1-row bands; with `row`, only that
+//! (`a` to `i`, the cases below: the frame in 1-row bands; with `row`, only that
 //! band, through `render_window`). Prints the frame's report.
 
 use embedded_graphics::pixelcolor::Rgb565;
@@ -37,6 +37,7 @@ fn main() {
     let row: Option<i32> = args.get(2).and_then(|r| r.parse().ok());
     let (w, h): (u16, u16) = match which {
         "a" => (4, 15),
+        "h" => (5, 32),
         _ => (16, 16),
     };
     let fine = [3u32];
@@ -47,6 +48,11 @@ fn main() {
     let path_d = SvgPath::new("M -40 8 L 60 8").unwrap();
     let circle = Circle::new(FinePoint::new(8 * 1024, 8 * 1024), 45 * 512);
     let short = [16u32];
+    let ellipse = softedge::path::Ellipse::new(
+        FinePoint::new(14 * 1024, 33 * 1024 + 512),
+        4 * 1024,
+        12 * 1024 + 512,
+    );
     let zig_dash = [2000u32, 1];
     let zig: Vec<FinePoint> = (0..400)
         .map(|i| FinePoint::new((i % 2) * 3 * 1024, i * 40))
@@ -71,6 +77,19 @@ fn main() {
                 let _ = c.stroke_shape(&path_c, &s, [4095; 3], Blend::Over, Opacity::OPAQUE);
             }
             "e" => {}
+            "i" => {
+                // An ellipse of semi-axes 2000 and 1900 px stroked 4096 px wide.
+                let s = StrokeStyle::new(4096 * 1024);
+                let big =
+                    softedge::path::Ellipse::new(FinePoint::new(0, 0), 2000 * 1024, 1900 * 1024);
+                let _ = c.stroke_shape(&big, &s, [4095; 3], Blend::Over, Opacity::OPAQUE);
+            }
+            "h" => {
+                // The renderer fuzz target's slow input: an 8x25-px
+                // ellipse stroked 1 799 px wide (solid).
+                let s = StrokeStyle::new(1_842_204);
+                let _ = c.stroke_shape(&ellipse, &s, [4095; 3], Blend::Over, Opacity::OPAQUE);
+            }
             "f" => {
                 // Round caps on a thin stroke: many small arcs.
                 let s = StrokeStyle::new(2048)

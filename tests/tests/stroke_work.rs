@@ -193,3 +193,31 @@ fn the_budget_is_charged_by_the_stated_rule() {
     assert_eq!(line(fits), Ok(()));
     assert_eq!(line(fits + 3), Err(StrokeError::TooComplex));
 }
+
+/// Solid strokes too: a piece of the path (and the joins and caps at its
+/// ends) that misses the band, within the range square, is quiet. An
+/// ellipse of 1000 x 900 px stroked 300 px wide (its offset curve needs
+/// thousands of pieces with round joins between them): a band builds the
+/// pieces near it, with the same segments and numbers there as the whole
+/// stroke.
+#[test]
+fn a_wide_solid_curve_builds_only_the_pieces_near_the_band() {
+    let e = softedge::path::Ellipse::new(FinePoint::new(0, 0), 1000 * 1024, 900 * 1024);
+    let style = StrokeStyle::new(300 * 1024).with_join(softedge::path::LineJoin::Round);
+    let (most, r) = check_bands("wide ellipse", &e, &style, 16);
+    assert_eq!(r, Ok(()));
+    let (whole, _) = stroke(&e, &style, None);
+    assert!(most * 2 < whole.sent, "{most} of {}", whole.sent);
+    // And a polyline with round joins and caps, crossing the band.
+    let v = [
+        FinePoint::new(-400 * 1024, -300 * 1024),
+        FinePoint::new(8 * 1024, 8 * 1024),
+        FinePoint::new(300 * 1024, -200 * 1024),
+        FinePoint::new(-100 * 1024, 500 * 1024),
+    ];
+    let style = StrokeStyle::new(40 * 1024)
+        .with_join(softedge::path::LineJoin::Round)
+        .with_cap(LineCap::Round);
+    let (_, r) = check_bands("polyline", &softedge::path::Polyline::new(&v), &style, 16);
+    assert_eq!(r, Ok(()));
+}

@@ -132,6 +132,33 @@ impl<'d> Dash<'d> {
 /// the grid rounding.
 const CULL_SLACK: i64 = 16;
 
+/// True when everything a whole piece of `p` sends (its edges, the caps
+/// and joins at its ends, all within `reach` of its corners) lies wholly
+/// above or below `window` and inside the range square: the piece can be
+/// quiet ([`Piece::quiet`]), solid or dashed, and its joins with its
+/// neighbours too. A band of a long or wide curved stroke then computes
+/// the arcs of only the joins near it.
+pub(crate) fn misses(p: &Piece, window: Option<(i32, i32)>, reach: i64) -> bool {
+    let Some((lo, hi)) = window else {
+        return false;
+    };
+    let r = reach.saturating_add(CULL_SLACK);
+    let room = i64::from(FINE_LIMIT).saturating_sub(r);
+    let corners = [p.sm, p.sp, p.em, p.ep];
+    if !corners
+        .iter()
+        .all(|q| q.x.abs() <= room && q.y.abs() <= room)
+    {
+        return false;
+    }
+    let (mut y0, mut y1) = (p.sm.y, p.sm.y);
+    for q in corners {
+        y0 = y0.min(q.y);
+        y1 = y1.max(q.y);
+    }
+    y1.saturating_add(r) < i64::from(lo) || y0.saturating_sub(r) > i64::from(hi)
+}
+
 /// Where along a piece its dashes miss a window: the cross-section of the
 /// piece at `u` runs from its `m` edge to its `p` edge (the path's point
 /// between them), both edges straight in `u`; the segments of dashes

@@ -382,6 +382,8 @@ pub struct Stroker<'s, 'd, S: SegmentSink + ?Sized> {
     pieced: bool,
     /// The width is zero: nothing is drawn.
     empty: bool,
+    /// How far the stroke reaches from its path (caps, joins), fine units.
+    reach: i64,
 }
 
 impl<'s, 'd, S: SegmentSink + ?Sized> Stroker<'s, 'd, S> {
@@ -411,6 +413,7 @@ impl<'s, 'd, S: SegmentSink + ?Sized> Stroker<'s, 'd, S> {
             drawn: false,
             pieced: false,
             empty: sides.width() == 0,
+            reach,
         }
     }
 
@@ -456,7 +459,8 @@ impl<'s, 'd, S: SegmentSink + ?Sized> Stroker<'s, 'd, S> {
     }
 
     /// The next piece of the contour.
-    fn feed(&mut self, p: Piece, join: JoinKind) {
+    fn feed(&mut self, mut p: Piece, join: JoinKind) {
+        p.quiet = dash::misses(&p, self.outline.window(), self.reach);
         if !self.pieced {
             self.pieced = true;
             match self.dasher.as_mut() {
@@ -530,7 +534,7 @@ impl<'s, 'd, S: SegmentSink + ?Sized> Stroker<'s, 'd, S> {
     }
 
     /// Half the widest reach, fine units (for the extra curve segments).
-    fn reach(&self) -> i64 {
+    fn half_width(&self) -> i64 {
         self.sides.m.max(self.sides.p) / 2
     }
 }
@@ -583,7 +587,7 @@ impl<S: SegmentSink + ?Sized> PathSink for Stroker<'_, '_, S> {
         let q = [self.current, Pt::from(c), Pt::from(p)];
         let turn = legs_turning(&[q[1].sub(q[0]), q[2].sub(q[1])]);
         let n = (quad_count(&q, i64::from(self.tol.fine()))
-            + turn_count(turn, self.reach(), i64::from(self.tol.fine())))
+            + turn_count(turn, self.half_width(), i64::from(self.tol.fine())))
         .min(MAX_CURVE_SEGMENTS);
         self.curve(n, |k| quad_at(&q, k, n), |k| quad_tangent(&q, k, n));
         self.current = q[2];
@@ -597,7 +601,7 @@ impl<S: SegmentSink + ?Sized> PathSink for Stroker<'_, '_, S> {
         let q = [self.current, Pt::from(c1), Pt::from(c2), Pt::from(p)];
         let turn = legs_turning(&[q[1].sub(q[0]), q[2].sub(q[1]), q[3].sub(q[2])]);
         let n = (cubic_count(&q, i64::from(self.tol.fine()))
-            + turn_count(turn, self.reach(), i64::from(self.tol.fine())))
+            + turn_count(turn, self.half_width(), i64::from(self.tol.fine())))
         .min(MAX_CURVE_SEGMENTS);
         self.curve(n, |k| cubic_at(&q, k, n), |k| cubic_tangent(&q, k, n));
         self.current = q[3];
