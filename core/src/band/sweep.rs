@@ -23,9 +23,10 @@
 //! a level, of the exact `acc (1 - k) + I k`. The sweep clears what it
 //! reads, for the next shape.
 
-use super::tags::{self, Palette, MIXED};
+use super::tags::{self, MIXED};
 use super::BandBuffer;
-use super::ROW_HEAD;
+#[cfg(feature = "text")]
+use super::{tags::Palette, ROW_HEAD};
 use crate::shade::{Plane, PLANE_FRAC};
 use crate::style::{FillRule, Opacity};
 use crate::{COVER_BITS, COVER_ONE};
@@ -295,11 +296,14 @@ impl<const C: usize> BandBuffer<'_, C> {
 }
 
 /// Entries of a [`MaskBlend`]'s memo.
+#[cfg(feature = "text")]
 const MEMO: usize = 64;
 /// Palette entries a mask composite leaves free for the flat colours of
 /// later shapes.
+#[cfg(feature = "text")]
 const MEMO_RESERVE: usize = 2;
 
+#[cfg(feature = "text")]
 impl<const C: usize> BandBuffer<'_, C> {
     /// [`compose`](Self::compose) of an opaque flat colour `color` over,
     /// nonzero rule, for a coverage given by masks (text): as the flat
@@ -409,12 +413,14 @@ impl<const C: usize> BandBuffer<'_, C> {
 
 /// A mask composite's colour `f` (accumulator units) and its memo: per
 /// slot, the key `share << 8 | tag below` and the tag of the blend.
+#[cfg(feature = "text")]
 struct MaskBlend<const C: usize> {
     f: [i32; C],
     keys: [u32; MEMO],
     tags: [u8; MEMO],
 }
 
+#[cfg(feature = "text")]
 impl<const C: usize> MaskBlend<C> {
     /// Pixel `x` of a row (its tag `words`, its accumulator `acc`) covered
     /// by the share `s` (`0 < s < COVER_ONE`): a pixel tagged with a
@@ -1130,6 +1136,7 @@ mod tests {
     /// every tag stays true (a tagged pixel holds its entry's value), and
     /// the drawn extents hold every changed pixel.
     #[test]
+    #[cfg(feature = "text")]
     fn mask_composites_through_the_memo_match_the_flat_sweep() {
         const C: usize = 3;
         let mut rng = crate::path::testing::Lcg(0x3e3a_0001);
