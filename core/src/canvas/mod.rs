@@ -587,6 +587,13 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         r.inspect_err(|&e| self.skip(serial, e))
     }
 
+    /// The rows of `span` (frame rows) in this band, `None` when none.
+    fn band_rows(&self, span: core::ops::Range<i32>) -> Option<core::ops::Range<i32>> {
+        let band = self.buf.band();
+        let rows = span.start.max(band.y0)..span.end.min(band.y0 + i32::from(band.rows));
+        (rows.start < rows.end).then_some(rows)
+    }
+
     /// A disc (`inner` 0) or a ring of centre `c` and radii `outer >
     /// inner` (quarter fine units) by its circles' exact areas
     /// ([`edge::disc`](crate::edge::disc)), for the exact box model, in
@@ -612,17 +619,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         // Its box as its outline's (`paths::shape_bounds`, widened by the
         // curves' margin), all in range: out of range, the outline path
         // reports it.
-        let reach = (outer as i32 + 3) / 4 + 16;
-        // Saturating: a centre near the `i32` ends is out of range anyway.
-        let b = FineRect {
-            x0: c.x.saturating_sub(reach),
-            y0: c.y.saturating_sub(reach),
-            x1: c.x.saturating_add(reach),
-            y1: c.y.saturating_add(reach),
-        };
-        if !(FinePoint::new(b.x0, b.y0).in_range() && FinePoint::new(b.x1, b.y1).in_range()) {
-            return None;
-        }
+        let b = circle_box(c, u32::try_from(outer).ok()?)?;
         let out = CircleEdge::new(c.x * 4, c.y * 4, outer as u32)?;
         let hole = if inner > 0 {
             Some(CircleEdge::new(c.x * 4, c.y * 4, inner as u32)?)
@@ -633,12 +630,9 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         if !self.touches(&b) {
             return Some(Ok(()));
         }
-        let band = self.buf.band();
-        let span = out.rows();
-        let rows = span.start.max(band.y0)..span.end.min(band.y0 + i32::from(band.rows));
-        if rows.start >= rows.end {
+        let Some(rows) = self.band_rows(out.rows()) else {
             return Some(Ok(()));
-        }
+        };
         let mut d = self.buf.deltas(rows.clone());
         out.walk(rows.clone(), 1, &mut d);
         if let Some(h) = hole {
@@ -704,17 +698,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             return None;
         }
         let c = arc.centre;
-        let reach = (outer as i32 + 3) / 4 + 16;
-        // Saturating: a centre near the `i32` ends is out of range anyway.
-        let b = FineRect {
-            x0: c.x.saturating_sub(reach),
-            y0: c.y.saturating_sub(reach),
-            x1: c.x.saturating_add(reach),
-            y1: c.y.saturating_add(reach),
-        };
-        if !(FinePoint::new(b.x0, b.y0).in_range() && FinePoint::new(b.x1, b.y1).in_range()) {
-            return None;
-        }
+        let b = circle_box(c, u32::try_from(outer).ok()?)?;
         // The ends, as `Arc::stroke_with` finds them (fine units).
         let c_q8 = Pt::new(i64::from(c.x) << 8, i64::from(c.y) << 8);
         let r_q8 = i64::from(arc.radius) << 8;
@@ -764,16 +748,13 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         if !self.touches(&b) {
             return Some(Ok(()));
         }
-        let band = self.buf.band();
-        let span = out_edge.rows();
-        let rows = span.start.max(band.y0)..span.end.min(band.y0 + i32::from(band.rows));
-        if rows.start >= rows.end {
+        let Some(rows) = self.band_rows(out_edge.rows()) else {
             return Some(Ok(()));
-        }
+        };
         let shape = ShapeBand {
             serial,
             mode: AreaMode::Exact,
-            cols: band.column_range(),
+            cols: self.buf.band().column_range(),
             rows: rows.clone(),
         };
         let mut cache = self.cache.as_mut();
@@ -1472,6 +1453,21 @@ fn sampled_edge<const C: usize>(
         PixelModel::Hamming => walk_circular(buf, a, b, CircularFilter::Hamming, rows),
         _ => {}
     }
+}
+
+/// The box of a circle about `c` of radius `outer` (1/4096 px) as its
+/// outline's (`paths::shape_bounds`, widened by the curves' margin), when
+/// all of it is in range; `None` otherwise (the outline path then reports
+/// the shape). Saturating: a centre near the `i32` ends is out of range.
+fn circle_box(c: FinePoint, outer: u32) -> Option<FineRect> {
+    let reach = i32::try_from(outer.div_ceil(4)).ok()?.saturating_add(16);
+    let b = FineRect {
+        x0: c.x.saturating_sub(reach),
+        y0: c.y.saturating_sub(reach),
+        x1: c.x.saturating_add(reach),
+        y1: c.y.saturating_add(reach),
+    };
+    (FinePoint::new(b.x0, b.y0).in_range() && FinePoint::new(b.x1, b.y1).in_range()).then_some(b)
 }
 
 #[cfg(test)]
