@@ -366,7 +366,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
 /// rounding), toned and packed one by one; columns left and right of a
 /// row's drawn extent get the background's. Every pixel sent is reset to
 /// the background. Then the run is streamed to the target from the
-/// slice, and zeroed.
+/// slice, each pixel zeroed as it is taken.
 fn send<D, P, const C: usize>(
     buf: &mut BandBuffer<'_, C>,
     target: &mut D,
@@ -440,10 +440,21 @@ where
         tone.row(out, words, acc, drawn, dense);
         words.fill(0);
     }
+    // Streamed and zeroed in one pass; what the target did not take is
+    // zeroed after.
     let len = w * rows;
     let out = parts.out.get_mut(..len).unwrap_or_default();
-    let sent = target.fill_contiguous(&area, out.iter().map(|&v| D::Color::from_raw(v as u32)));
-    out.fill(0);
+    let mut taken = 0usize;
+    let sent = target.fill_contiguous(
+        &area,
+        out.iter_mut().map(|v| {
+            taken += 1;
+            D::Color::from_raw(core::mem::take(v) as u32)
+        }),
+    );
+    if let Some(rest) = out.get_mut(taken..) {
+        rest.fill(0);
+    }
     sent
 }
 
@@ -591,6 +602,7 @@ mod tests {
     use std::vec::Vec;
 
     use embedded_graphics_core::pixelcolor::{Gray8, Rgb565};
+    use embedded_graphics_core::prelude::PointsIter;
     use embedded_graphics_core::Pixel;
 
     use super::*;
@@ -816,6 +828,77 @@ mod tests {
                     "case {case} frame {frame}: {w}x{h} in bands of {rows}"
                 );
             }
+        }
+    }
+
+    /// A display that takes only the first pixels of each band it is
+    /// sent (a driver that stops early), and keeps them.
+    struct Stingy<Col> {
+        shown: Capture<Col>,
+        calls: usize,
+    }
+
+    impl<Col> OriginDimensions for Stingy<Col> {
+        fn size(&self) -> Size {
+            self.shown.size()
+        }
+    }
+
+    impl<Col: PixelColorRaw> DrawTarget for Stingy<Col> {
+        type Color = Col;
+        type Error = core::convert::Infallible;
+        fn draw_iter<I: IntoIterator<Item = Pixel<Col>>>(
+            &mut self,
+            px: I,
+        ) -> Result<(), Self::Error> {
+            self.shown.draw_iter(px)
+        }
+        fn fill_contiguous<I: IntoIterator<Item = Col>>(
+            &mut self,
+            area: &Rectangle,
+            colors: I,
+        ) -> Result<(), Self::Error> {
+            self.calls += 1;
+            let n = area.size.width as usize * area.size.height as usize;
+            let take = self.calls * 37 % (n + 1);
+            let px = area
+                .points()
+                .zip(colors)
+                .take(take)
+                .map(|(p, c)| Pixel(p, c));
+            self.shown.draw_iter(px)
+        }
+    }
+
+    /// A display that stops taking a band's pixels early gets the right
+    /// ones, and the band is left clean for the next band and frame.
+    #[test]
+    fn a_band_the_display_took_part_of_is_left_clean() {
+        static RGB565: Rgb565Format = Rgb565Format::new(Curve::Srgb);
+        let bg = [300, 2000, 40];
+        let mut rng = Lcg(0x5717_6e79);
+        for case in 0..100u64 {
+            let (w, h) = (1 + rng.below(40) as u16, 1 + rng.below(30) as u16);
+            let rows = 1 + rng.below(9) as u16;
+            let seed = rng.next_u64();
+            let want = reference::<3, Rgb565, _>(seed, w, h, bg, &&RGB565);
+            let mut acc = vec![0; BandBuffer::<3>::acc_len(w, rows)];
+            let mut cover = vec![0; BandBuffer::<3>::cover_len(w, rows)];
+            let mut slots = [crate::canvas::WalkSlot::<3>::EMPTY; 4];
+            let mut r = Renderer::<3>::new(&mut acc, &mut cover, &mut slots, w, h, rows).unwrap();
+            let mut stingy = Stingy {
+                shown: Capture::<Rgb565>::new(w, h),
+                calls: 0,
+            };
+            r.render(&mut stingy, &RGB565, bg, scene::<3, Rgb565>(seed, w, h))
+                .unwrap();
+            for (k, (&got, &px)) in stingy.shown.px.iter().zip(&want).enumerate() {
+                assert!(got == u32::MAX || got == px, "case {case}: pixel {k}");
+            }
+            let mut shown = Capture::<Rgb565>::new(w, h);
+            r.render(&mut shown, &RGB565, bg, scene::<3, Rgb565>(seed, w, h))
+                .unwrap();
+            assert!(shown.px == want, "case {case}: {w}x{h} in bands of {rows}");
         }
     }
 
