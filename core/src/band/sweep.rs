@@ -566,8 +566,13 @@ fn over_flat_row<const C: usize, const SIGNED: bool, const TAGS: bool, const GAP
             // pixels, stepped a chunk at a time (a loop bounded by the
             // pixels left would make the compiler divide their count by
             // C, a library call on the Cortex-M0), and tagged.
-            let rest = changes.get(i..).unwrap_or_default();
-            let k = rest.iter().position(|&d| d != 0).unwrap_or(rest.len());
+            let k = if GAPS {
+                // Long runs (a disc's interior): four at a time.
+                next_change(changes, i) - i
+            } else {
+                let rest = changes.get(i..).unwrap_or_default();
+                rest.iter().position(|&d| d != 0).unwrap_or(rest.len())
+            };
             store(px, at, k + 1, f);
             if TAGS {
                 tags::fill(tags.words, tags.lo + at, tags.lo + at + k + 1, tags.tag);
@@ -621,7 +626,18 @@ fn over_flat_row<const C: usize, const SIGNED: bool, const TAGS: bool, const GAP
 #[inline(never)]
 fn next_change(changes: &[i32], i: usize) -> usize {
     let rest = changes.get(i..).unwrap_or_default();
-    i + rest.iter().position(|&d| d != 0).unwrap_or(rest.len())
+    // Four at a time (one test of their union), then one by one.
+    let mut k = 0;
+    for four in rest.chunks_exact(4) {
+        if let [a, b, c, d] = *four {
+            if a | b | c | d != 0 {
+                break;
+            }
+        }
+        k += 4;
+    }
+    let tail = rest.get(k..).unwrap_or_default();
+    i + k + tail.iter().position(|&d| d != 0).unwrap_or(tail.len())
 }
 
 /// `f` into the `k` pixels of `px` from pixel `a` on.
