@@ -705,6 +705,11 @@ impl BandDeltas<'_> {
 }
 
 impl crate::edge::DeltaSink for BandDeltas<'_> {
+    #[inline]
+    fn columns(&self) -> Option<(i32, i32)> {
+        Some((self.x0, self.x0.saturating_add(self.w)))
+    }
+
     /// One bounds test for the run of rows, then two additions and the
     /// extent per row (the general `put_n` finds each row's start by a
     /// multiply and tests it).

@@ -330,6 +330,7 @@ impl CircleEdge {
         if lo >= hi {
             return;
         }
+        let out = &mut self.clipped(out);
         let (top, bot) = (self.cy - self.r, self.cy + self.r);
         let mut ya = (lo << Q_BITS).max(top);
         let mut wa = self.half_width(ya - self.cy);
@@ -345,6 +346,16 @@ impl CircleEdge {
             ya = yb;
             wa = wb;
         }
+    }
+
+    /// `out`, saying which columns it keeps only when the circle reaches
+    /// past them (a window's band): a circle within them is walked
+    /// without the test.
+    fn clipped<'s, S: DeltaSink>(&self, out: &'s mut S) -> Columns<'s, S> {
+        let cols = out.columns().filter(|&(x0, x1)| {
+            (self.cx - self.r) >> Q_BITS < x0 || (self.cx + self.r) >> Q_BITS >= x1
+        });
+        Columns { out, cols }
     }
 
     /// The parts of the circle from the clockwise angle `a` over `s`
@@ -415,6 +426,7 @@ impl CircleEdge {
     ) {
         let span = self.rows();
         let (lo, hi) = (rows.start.max(span.start), rows.end.min(span.end));
+        let out = &mut self.clipped(out);
         let (top, bot) = (self.cy - self.r, self.cy + self.r);
         for row in lo..hi {
             let ya = (row << Q_BITS).max(top);
@@ -498,6 +510,21 @@ impl CircleEdge {
         out: &mut S,
     ) {
         let (a, b) = ((xs.0, ys.0), (xs.1, ys.1));
+        if let Some((x0, x1)) = out.columns() {
+            // Every cell's column lies within these.
+            let (c0, c1) = (xs.0.min(xs.1) >> Q_BITS, xs.0.max(xs.1) >> Q_BITS);
+            if c0 >= x1 {
+                // Right of the sink: dropped cell by cell, so skipped.
+                return;
+            }
+            let h = (b.1 - a.1) << (COVER_BITS - Q_BITS);
+            if c1 < x0 && h != 0 {
+                // Left of it: the cells' changes all land at `x0`, and
+                // they sum to the piece's cover.
+                out.put(x0, row, sign * h);
+                return;
+            }
+        }
         let mut p = a;
         if b.0 > a.0 {
             let mut x = ((a.0 >> Q_BITS) + 1) << Q_BITS;
@@ -561,6 +588,28 @@ impl CircleEdge {
         if a != 0 || h != 0 {
             out.put2(c, c + 1, row, sign * a, sign * (h - a));
         }
+    }
+}
+
+/// A sink with the columns it keeps, or `None` (see
+/// [`CircleEdge::clipped`]).
+struct Columns<'s, S> {
+    out: &'s mut S,
+    cols: Option<(i32, i32)>,
+}
+
+impl<S: DeltaSink> DeltaSink for Columns<'_, S> {
+    #[inline(always)]
+    fn put(&mut self, x: i32, y: i32, d: i32) {
+        self.out.put(x, y, d);
+    }
+    #[inline(always)]
+    fn put2(&mut self, x0: i32, x1: i32, y: i32, d0: i32, d1: i32) {
+        self.out.put2(x0, x1, y, d0, d1);
+    }
+    #[inline(always)]
+    fn columns(&self) -> Option<(i32, i32)> {
+        self.cols
     }
 }
 
@@ -651,14 +700,31 @@ mod tests {
         }
     }
 
-    /// The circle walked into a window in bands of `band` rows.
+    /// A window that says which columns it keeps (as a band does), so
+    /// the walk sums what lies left of it and skips what lies right.
+    struct Clipping(Window);
+
+    impl DeltaSink for Clipping {
+        fn put(&mut self, x: i32, y: i32, d: i32) {
+            self.0.put(x, y, d);
+        }
+        fn columns(&self) -> Option<(i32, i32)> {
+            Some((self.0.x0, self.0.x0 + self.0.w))
+        }
+    }
+
+    /// The circle walked into a window in bands of `band` rows; the same
+    /// changes whether the window says what it keeps or not.
     fn walk(c: &CircleEdge, win: (i32, i32, i32, i32), band: i32) -> Vec<i64> {
         let mut w = Window::new(win.0, win.1, win.2, win.3);
+        let mut clip = Clipping(Window::new(win.0, win.1, win.2, win.3));
         let mut y = win.1;
         while y < win.1 + win.3 {
             c.walk(y..y + band, 1, &mut w);
+            c.walk(y..y + band, 1, &mut clip);
             y += band;
         }
+        assert_eq!(w.d, clip.0.d, "{c:?} in {win:?}");
         w.coverage()
     }
 

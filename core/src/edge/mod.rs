@@ -124,6 +124,14 @@ pub(crate) trait DeltaSink {
     /// One change.
     fn put(&mut self, x: i32, y: i32, d: i32);
 
+    /// The columns `x0..x1` the sink keeps, when it clips: changes left of
+    /// `x0` apply at `x0`, right of `x1` are dropped (a band's window), so
+    /// a walk may sum the ones left of it and skip the ones right of it.
+    #[inline]
+    fn columns(&self) -> Option<(i32, i32)> {
+        None
+    }
+
     /// Two changes in row `y`, at `x0` and `x1` (neighbours).
     #[inline]
     fn put2(&mut self, x0: i32, x1: i32, y: i32, d0: i32, d1: i32) {
