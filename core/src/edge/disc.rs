@@ -333,9 +333,21 @@ impl CircleEdge {
         let out = &mut self.clipped(out);
         let (top, bot) = (self.cy - self.r, self.cy + self.r);
         let mut ya = (lo << Q_BITS).max(top);
-        let mut wa = self.half_width(ya - self.cy);
+        // The half width at `ya`, once needed.
+        let mut known = None;
         for row in lo..hi {
             let yb = ((row + 1) << Q_BITS).min(bot);
+            if out.cols.is_some()
+                && ya < yb
+                && self.beside(out, (ya, yb), false, -sign, row)
+                && self.beside(out, (ya, yb), true, sign, row)
+            {
+                // Both halves beside the columns kept: no square root.
+                ya = yb;
+                known = None;
+                continue;
+            }
+            let wa = known.unwrap_or_else(|| self.half_width(ya - self.cy));
             let wb = self.half_width(yb - self.cy);
             if ya < self.cy && self.cy < yb {
                 self.piece(row, ya, self.cy, wa, self.r, true, sign, out);
@@ -344,7 +356,7 @@ impl CircleEdge {
                 self.piece(row, ya, yb, wa, wb, yb <= self.cy, sign, out);
             }
             ya = yb;
-            wa = wb;
+            known = Some(wb);
         }
     }
 
@@ -439,6 +451,10 @@ impl CircleEdge {
                     if y0 >= y1 {
                         continue;
                     }
+                    let sg = if left { sign } else { -sign };
+                    if out.cols.is_some() && self.beside(out, (y0, y1), left, sg, row) {
+                        continue;
+                    }
                     let x_at = |y: i32, cut: &End, w: &mut Option<i32>| -> i32 {
                         if let (true, Some(x)) = (y == cut.0, cut.1) {
                             return x;
@@ -466,11 +482,45 @@ impl CircleEdge {
                     } else {
                         x_at(y1, &part.hi, &mut None)
                     };
-                    let sg = if left { sign } else { -sign };
                     self.side(row, (x0, x1), (y0, y1), upper, left, sg, out);
                 }
             }
         }
+    }
+
+    /// True when the piece of the left or right half between heights
+    /// `ys` lies wholly beside the columns `out` keeps, told without its
+    /// square roots (the half width there is at least `r - |v|`, and a cut
+    /// point lies within a few units of the circle): then it is put as
+    /// [`side`](Self::side) would put it, its cover at the first column
+    /// (left) or nothing (right).
+    #[inline(never)]
+    fn beside<S: DeltaSink>(
+        &self,
+        out: &mut Columns<'_, S>,
+        ys: (i32, i32),
+        left: bool,
+        sign: i32,
+        row: i32,
+    ) -> bool {
+        let Some((x0, x1)) = out.cols else {
+            return false;
+        };
+        let v = (ys.0 - self.cy).abs().max((ys.1 - self.cy).abs());
+        // Below every half width there, less the cut points' slack.
+        let inner = self.r - v - 8;
+        if inner < 0 {
+            return false;
+        }
+        if left {
+            if (self.cx - inner) >> Q_BITS < x0 {
+                out.put(x0, row, sign * ((ys.1 - ys.0) << (COVER_BITS - Q_BITS)));
+                return true;
+            }
+        } else if (self.cx + inner) >> Q_BITS >= x1 {
+            return true;
+        }
+        false
     }
 
     /// Both halves' pieces between heights `y0 < y1` of row `row`, half
@@ -754,6 +804,52 @@ mod tests {
         let top = (1u64 << 50) - 1;
         let s = u64::from(isqrt64(top));
         assert!(s * s <= top && (s + 1) * (s + 1) > top);
+    }
+
+    /// An arc's parts walked into windows that cut the circle anywhere
+    /// (beside it too): the same changes whether the window says which
+    /// columns it keeps or not, in any band height.
+    #[test]
+    fn arcs_walk_the_same_into_clipping_windows() {
+        let mut rng = Lcg(0xa2c5_0f_c01);
+        for case in 0..800 {
+            let r_q = 4 * (512 + (rng.below(200 * 1024) >> rng.below(8)) as i32);
+            let (cx, cy) = (
+                4 * (rng.below(100 * 1024) as i32 - 50 * 1024),
+                4 * (rng.below(100 * 1024) as i32 - 50 * 1024),
+            );
+            let c = CircleEdge::new(cx, cy, r_q as u32).unwrap();
+            let a = rng.below(1 << 32) as i64;
+            let sweep = 1 + rng.below((1 << 32) - 1) as i64;
+            // The cut points on the circle, rounded (within a unit).
+            let at = |t: i64| -> (i32, i32) {
+                let ang = t as f64 / 4_294_967_296.0 * std::f64::consts::TAU;
+                (
+                    cx + (f64::from(r_q) * ang.cos()).round() as i32,
+                    cy + (f64::from(r_q) * ang.sin()).round() as i32,
+                )
+            };
+            let spans = c.arc_spans(a, sweep, at(a), at(a + sweep));
+            let rows = c.rows();
+            let (x_lo, x_hi) = ((cx - r_q) >> Q_BITS, (cx + r_q) >> Q_BITS);
+            let x0 = x_lo - 3 + rng.below((x_hi - x_lo + 6) as u64) as i32;
+            let w = 1 + rng.below(40) as i32;
+            let h = rows.end - rows.start;
+            for band in [16, 3] {
+                let mut plain = Window::new(x0, rows.start, w, h);
+                let mut clip = Clipping(Window::new(x0, rows.start, w, h));
+                let mut y = rows.start;
+                while y < rows.end {
+                    c.walk_spans(y..y + band, 1, &spans, &mut plain);
+                    c.walk_spans(y..y + band, 1, &spans, &mut clip);
+                    y += band;
+                }
+                assert_eq!(
+                    plain.d, clip.0.d,
+                    "case {case}: {c:?} window at {x0} width {w}"
+                );
+            }
+        }
     }
 
     /// Every square and its neighbours: `floor(sqrt)` changes exactly
