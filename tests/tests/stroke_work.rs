@@ -12,7 +12,7 @@
 use softedge::geom::FinePoint;
 use softedge::path::svg::SvgPath;
 use softedge::path::{
-    Circle, Dash, LineCap, SegmentSink, Shape, StrokeError, StrokeStyle, Tolerance,
+    Circle, Dash, LineCap, MiterLimit, SegmentSink, Shape, StrokeError, StrokeStyle, Tolerance,
 };
 
 /// Counts segments sent and keeps those meeting `window` (rows, fine
@@ -220,4 +220,30 @@ fn a_wide_solid_curve_builds_only_the_pieces_near_the_band() {
         .with_cap(LineCap::Round);
     let (_, r) = check_bands("polyline", &softedge::path::Polyline::new(&v), &style, 16);
     assert_eq!(r, Ok(()));
+}
+
+/// Miter joins of quiet pieces are counted, not built (no tip computed):
+/// a zigzag whose turns are within the miter limit and beyond it (bevel),
+/// both ways, and a chart's line, keep the same segments and numbers in
+/// every band as the whole stroke.
+#[test]
+fn quiet_miter_joins_keep_their_numbers() {
+    let zig: Vec<FinePoint> = (0..40)
+        .map(|i| {
+            let x = (i % 2) * (3 + i % 7) * 1024 + (i % 3) * 300;
+            FinePoint::new(x, i * 700 - 2000)
+        })
+        .collect();
+    let chart: Vec<FinePoint> = (0..60)
+        .map(|i| FinePoint::new(i * 4 * 1024, ((i * 37) % 23) * 1024 + 512))
+        .collect();
+    for (name, pts) in [("zigzag", &zig), ("chart", &chart)] {
+        for width in [1024, 3 * 1024, 7 * 1024 + 300] {
+            for limit in [MiterLimit::DEFAULT, MiterLimit::from_q16(3 << 15)] {
+                let style = StrokeStyle::new(width).with_miter_limit(limit);
+                let (_, r) = check_bands(name, &softedge::path::Polyline::new(pts), &style, 28);
+                assert_eq!(r, Ok(()), "{name}");
+            }
+        }
+    }
 }

@@ -433,6 +433,11 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
         let dot = ua.dot(ub);
         match join {
             LineJoin::Bevel => self.seg(from, to),
+            LineJoin::Miter if self.miter_limit.allows(dot) && self.quiet => {
+                // Two segments within the range square (a quiet piece's
+                // reach): their numbers, without the tip's divisions.
+                self.sink.skipped(2);
+            }
             LineJoin::Miter if self.miter_limit.allows(dot) => {
                 // Tip: v + h (ua + ub) / (1 + ua.ub), h = h_q1 / 2.
                 let den = 2 * i128::from(Q30 + dot);
