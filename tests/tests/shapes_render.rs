@@ -437,6 +437,61 @@ fn a_straight_stroke_covers_length_times_width_plus_its_caps() {
 /// The stroke of `pts` drawn through the engine, its summed coverage
 /// against the exact union of its pieces (SVG's definition), relative.
 fn stroke_area_error(pts: &[FinePoint], wf: u32, join: LineJoin, cap: LineCap) -> f64 {
+    stroke_errors(pts, wf, join, cap, None).0
+}
+
+/// Each pixel's coverage of the union of `regions` in a `w x h` frame:
+/// `lines` horizontal lines per pixel row (midpoint rule), each line's
+/// union of intervals exact in x and split among the pixel columns. The
+/// midpoint rule is exact where the covered length is linear in y; a
+/// pixel holding a vertex, a crossing or a tangent of the outline is off
+/// by at most about `1 / (2 lines)` per such feature.
+fn union_coverage(
+    regions: &[softedge_tests::path_ref::Region],
+    w: usize,
+    h: usize,
+    lines: u32,
+) -> Vec<f64> {
+    let mut cov = vec![0.0; w * h];
+    let dy = 1.0 / f64::from(lines);
+    for row in 0..h {
+        for i in 0..lines {
+            let y = row as f64 + (f64::from(i) + 0.5) * dy;
+            let mut iv: Vec<(f64, f64)> = regions.iter().filter_map(|r| r.interval(y)).collect();
+            iv.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let mut merged: Vec<(f64, f64)> = Vec::new();
+            for (a, b) in iv {
+                match merged.last_mut() {
+                    Some(last) if a <= last.1 => last.1 = last.1.max(b),
+                    _ => merged.push((a, b)),
+                }
+            }
+            for (a, b) in merged {
+                let (a, b) = (a.max(0.0), b.min(w as f64));
+                if b <= a {
+                    continue;
+                }
+                for x in (a.floor() as usize)..(b.ceil() as usize).min(w) {
+                    let len = b.min(x as f64 + 1.0) - a.max(x as f64);
+                    cov[row * w + x] += len.max(0.0) * dy;
+                }
+            }
+        }
+    }
+    cov
+}
+
+/// The stroke of `pts` (64 x 64 frame, 16-row bands) against the exact
+/// union of its pieces: the relative error of its summed coverage and,
+/// with `lines`, the worst pixel against [`union_coverage`] at that
+/// many lines per pixel.
+fn stroke_errors(
+    pts: &[FinePoint],
+    wf: u32,
+    join: LineJoin,
+    cap: LineCap,
+    lines: Option<u32>,
+) -> (f64, f64) {
     let style = StrokeStyle::new(wf).with_join(join).with_cap(cap);
     let f = render_canvas::<1>(64, 64, 16, [0], 0, |c| {
         c.stroke_shape(
@@ -465,8 +520,20 @@ fn stroke_area_error(pts: &[FinePoint], wf: u32, join: LineJoin, cap: LineCap) -
         LineCap::Square => RefCap::Square,
     };
     let h = f64::from(wf) * FINE / 2.0;
-    let want = union_area(&polyline_stroke(&ptsf, h, rj, rc, false), 128);
-    total(&f) / want - 1.0
+    let regions = polyline_stroke(&ptsf, h, rj, rc, false);
+    let want = union_area(&regions, 128);
+    let rel = total(&f) / want - 1.0;
+    let worst_px = lines.map_or(0.0, |lines| {
+        let cov = union_coverage(&regions, 64, 64, lines);
+        let mut worst = 0f64;
+        for y in 0..64 {
+            for x in 0..64 {
+                worst = worst.max((coverage(&f, x, y) - cov[(y * 64 + x) as usize]).abs());
+            }
+        }
+        worst
+    });
+    (rel, worst_px)
 }
 
 const JOINS: [LineJoin; 3] = [LineJoin::Miter, LineJoin::Round, LineJoin::Bevel];
@@ -499,32 +566,101 @@ fn chart_polyline_strokes_cover_their_exact_outline_once() {
     println!("chart polyline strokes: worst relative area error {worst:.2e} (limit 5e-3)");
 }
 
-/// A polyline that crosses itself: where the stroke overlaps itself the
-/// fill rule acts on each pixel's mean winding number (as FreeType's
-/// smooth rasterizer does), which counts the overlap's share of a pixel
-/// twice where the pixel also holds uncovered area. Measured here, with
-/// the bound it keeps.
+/// A polyline that crosses itself, folds back on itself (U-turns, segments
+/// shorter than the stroke is wide) and overlaps its own caps: the stroke
+/// is the union of its pieces however often they overlap (issue #36), in
+/// sum against [`union_area`] and in every pixel against
+/// [`union_coverage`] at 256 lines per pixel (64 in debug builds), whose
+/// own error is about `1 / (2 lines)` per outline feature in a pixel.
+/// Before the union treatment (the outline's sum filled by the nonzero
+/// rule on each pixel's mean winding) these 100 strokes were off by up
+/// to +4.8 % (23 above 0.5 %) and a pixel by up to 0.48.
 #[test]
-fn self_crossing_polyline_strokes_are_within_the_mean_winding_bound() {
+fn self_crossing_polyline_strokes_cover_the_union_of_their_pieces() {
     let mut rng = Rng(17);
-    let (mut worst, mut over_half) = (0f64, 0);
+    let (mut worst, mut worst_px) = (0f64, 0f64);
     let cases = if cfg!(debug_assertions) { 20 } else { 100 };
+    let lines = if cfg!(debug_assertions) { 64 } else { 256 };
+    // 1/256 (the issue's bar); in debug builds the coarser reference's
+    // own error on top.
+    let px_limit = 1.0 / 256.0
+        + if lines < 256 {
+            0.5 / f64::from(lines)
+        } else {
+            0.0
+        };
     for k in 0..cases {
         let n = 3 + k % 5;
         let pts: Vec<FinePoint> = (0..n)
             .map(|_| fine_point(rng.range(8.0, 56.0), rng.range(8.0, 56.0)))
             .collect();
         let wf = (rng.range(0.5, 6.0) * 1024.0_f64).round() as u32;
-        let rel = stroke_area_error(&pts, wf, JOINS[k % 3], LineCap::Round);
-        // Never less than the union: only overlaps can add.
-        assert!(rel >= -2e-3, "polyline {k}: {rel:e}");
-        assert!(rel <= 0.08, "polyline {k}: {rel:e}");
-        worst = worst.max(rel);
-        over_half += usize::from(rel > 5e-3);
+        let (rel, px) = stroke_errors(&pts, wf, JOINS[k % 3], LineCap::Round, Some(lines));
+        assert!(rel.abs() <= 2e-3, "polyline {k}: {rel:e}");
+        assert!(px <= px_limit, "polyline {k}: a pixel off by {px}");
+        worst = worst.max(rel.abs());
+        worst_px = worst_px.max(px);
+    }
+    let (issue_worst, issue_px) = (worst, worst_px);
+    // Longer polylines (up to the treatment's 16 points), every cap.
+    for k in 0..cases / 2 {
+        let n = 8 + k % 9;
+        let pts: Vec<FinePoint> = (0..n)
+            .map(|_| fine_point(rng.range(8.0, 56.0), rng.range(8.0, 56.0)))
+            .collect();
+        let wf = (rng.range(0.3, 4.0) * 1024.0_f64).round() as u32;
+        let (join, cap) = (JOINS[k % 3], CAPS[k / 3 % 3]);
+        let (rel, px) = stroke_errors(&pts, wf, join, cap, Some(lines));
+        assert!(rel.abs() <= 2e-3, "long polyline {k}: {rel:e}");
+        assert!(px <= px_limit, "long polyline {k}: a pixel off by {px}");
+        worst = worst.max(rel.abs());
+        worst_px = worst_px.max(px);
     }
     println!(
-        "self-crossing polyline strokes: worst +{worst:.2e}; {over_half} of {cases} above 5e-3"
+        "self-crossing polyline strokes: worst relative area error {issue_worst:.2e}, worst \
+         pixel {issue_px:.5} (issue #36's {cases}); with the longer ones {worst:.2e}, \
+         {worst_px:.5} (limits 2e-3, {px_limit:.5})"
     );
+}
+
+/// The union's corrections are numbered the same in every band: the
+/// strokes of self-crossing polylines give the same bits in bands of any
+/// height, with and without the walk cache.
+#[test]
+fn self_crossing_polyline_strokes_give_the_same_bits_in_every_band() {
+    let mut rng = Rng(18);
+    for k in 0..12 {
+        let n = 3 + k % 10;
+        let pts: Vec<FinePoint> = (0..n)
+            .map(|_| fine_point(rng.range(4.0, 60.0), rng.range(4.0, 60.0)))
+            .collect();
+        let wf = (rng.range(0.5, 6.0) * 1024.0_f64).round() as u32;
+        let style = StrokeStyle::new(wf)
+            .with_join(JOINS[k % 3])
+            .with_cap(CAPS[k / 3 % 3]);
+        let op = Opacity::from_ratio(3, 4).unwrap();
+        let draw = |c: &mut Canvas<'_, '_, 3>| {
+            c.stroke_shape(
+                &Polyline::new(&pts),
+                &style,
+                [4095, 2000, 0],
+                Blend::Over,
+                op,
+            )
+            .unwrap();
+        };
+        let reference = render_canvas::<3>(64, 64, 64, [100, 200, 300], 0, draw);
+        for rows in [1, 2, 3, 7, 16, 33] {
+            for slots in [0, 3, 32] {
+                let f = render_canvas::<3>(64, 64, rows, [100, 200, 300], slots, draw);
+                assert_eq!(
+                    first_diff(&f.raw, &reference.raw),
+                    None,
+                    "polyline {k}: {rows} rows, {slots} slots"
+                );
+            }
+        }
+    }
 }
 
 /// A random convex polygon (fine units) around `(cx, cy)`: points on an

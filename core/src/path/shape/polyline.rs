@@ -60,7 +60,15 @@ impl<P: Copy + Into<FinePoint>> Shape for Polyline<'_, P> {
         tol: Tolerance,
         sink: &mut S,
     ) -> Result<(), StrokeError> {
-        centred_stroke(self, style, tol, sink)
+        let r = centred_stroke(self, style, tol, sink);
+        // Where the stroke overlaps itself: the union, not the sum.
+        let t = self.translate;
+        let points = self.vertices.iter().map(|&p| {
+            let p: FinePoint = p.into();
+            FinePoint::new(p.x.saturating_add(t.x), p.y.saturating_add(t.y)).into()
+        });
+        crate::path::stroke::union::polyline_union(points, style, tol, sink);
+        r
     }
 }
 

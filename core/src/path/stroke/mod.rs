@@ -22,6 +22,13 @@
 //! 2. With a dash pattern, the pieces are cut into dashes ([`dash`]).
 //! 3. Runs of pieces get joins between them and caps at their ends
 //!    ([`outline`]).
+//! 4. A [`Polyline`](crate::path::Polyline)'s stroke (solid, up to
+//!    [`union::MAX_UNION_POINTS`] points) then gets the intersections of
+//!    its overlapping pieces subtracted and added back ([`union`]): the
+//!    edge engine applies the nonzero rule to each pixel's *mean* winding
+//!    number, so where the stroke overlaps itself (crossings, short
+//!    segments, U-turns) the sum alone covers the pixels along the
+//!    overlap's border too much; the union covers each within 1/256.
 //!
 //! ## Cases handled
 //!
@@ -63,6 +70,7 @@
 
 pub mod dash;
 pub mod outline;
+pub mod union;
 
 use crate::geom::{FinePoint, PathSink};
 

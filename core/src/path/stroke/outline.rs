@@ -37,7 +37,10 @@
 //! other still covers): the pieces then tile the stroke, winding exactly
 //! one. When it does not (a segment shorter than the kite, a U-turn),
 //! both bodies stay whole and the inner side runs `B.s_in -> V -> A.e_in`:
-//! the kite is covered twice and the nonzero rule still gives the union.
+//! the kite is covered twice and the nonzero rule still gives the union
+//! at every point (a pixel's mean winding counts the kite twice where the
+//! pixel is also partly outside: a polyline's stroke gets the
+//! intersection subtracted, see [`union`](super::union)).
 //!
 //! ## Order of emission
 //!
@@ -400,8 +403,7 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
         // stroke's reach, and so does everything the join sends.
         self.quiet = a.quiet || b.quiet;
         let (na, nb) = (a.ne, b.ns);
-        let cross = na.cross(nb);
-        let right_turn = cross > 0 || (cross == 0 && na.dot(nb) < 0);
+        let right_turn = is_right_turn(na, nb);
         let join = match kind {
             JoinKind::Path => self.join,
             JoinKind::Curve => LineJoin::Round,
@@ -458,12 +460,7 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
                 self.sink.skipped(2);
             }
             LineJoin::Miter if self.miter_limit.allows(dot) => {
-                // Tip: v + h (ua + ub) / (1 + ua.ub), h = h_q1 / 2.
-                let den = 2 * i128::from(Q30 + dot);
-                let tip = Pt::new(
-                    v.x + div_round(i128::from(ua.x + ub.x) * i128::from(h_q1), den) as i64,
-                    v.y + div_round(i128::from(ua.y + ub.y) * i128::from(h_q1), den) as i64,
-                );
+                let tip = miter_tip(v, ua, ub, h_q1);
                 self.seg(from, tip);
                 self.seg(tip, to);
             }
@@ -522,11 +519,7 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
         match self.cap {
             LineCap::Butt => self.seg(from, to),
             LineCap::Square => {
-                // Out by half the width: (to - from) turned a quarter
-                // counter-clockwise on screen, halved (Q1, then rounded).
-                let d = to.sub(from);
-                let ext = Pt::new(div_half(d.y), div_half(-d.x));
-                let (a, b) = (from.add(ext), to.add(ext));
+                let (a, b) = square_cap_corners(from, to);
                 self.seg(from, a);
                 self.seg(a, b);
                 self.seg(b, to);
@@ -564,13 +557,41 @@ impl<S: SegmentSink + ?Sized> Vertices for ArcOut<'_, S> {
     }
 }
 
+/// The outer corners of a square cap on the cross-section `from -> to`:
+/// out by half the width, `(to - from)` turned a quarter counter-clockwise
+/// on screen, halved (Q1, then rounded).
+pub(super) fn square_cap_corners(from: Pt, to: Pt) -> (Pt, Pt) {
+    let d = to.sub(from);
+    let ext = Pt::new(div_half(d.y), div_half(-d.x));
+    (from.add(ext), to.add(ext))
+}
+
 /// `v / 2` rounded half away from zero.
-fn div_half(v: i64) -> i64 {
+pub(super) fn div_half(v: i64) -> i64 {
     crate::path::trig::round_shift(v, 1)
 }
 
-fn neg(u: Unit) -> Unit {
+pub(super) fn neg(u: Unit) -> Unit {
     Unit { x: -u.x, y: -u.y }
+}
+
+/// True when the path turns right (clockwise on screen) from the unit
+/// normal `na` to `nb`, or turns back (a U-turn counts as right): the
+/// outer side of the turn is then the `m` side.
+pub(super) fn is_right_turn(na: Unit, nb: Unit) -> bool {
+    let cross = na.cross(nb);
+    cross > 0 || (cross == 0 && na.dot(nb) < 0)
+}
+
+/// The tip of a miter join at `v` between the outward unit normals `ua`,
+/// `ub`, reaching `h_q1` half fine units: `v + h (ua + ub) / (1 + ua.ub)`,
+/// `h = h_q1 / 2`.
+pub(super) fn miter_tip(v: Pt, ua: Unit, ub: Unit, h_q1: i64) -> Pt {
+    let den = 2 * i128::from(Q30 + ua.dot(ub));
+    Pt::new(
+        v.x + div_round(i128::from(ua.x + ub.x) * i128::from(h_q1), den) as i64,
+        v.y + div_round(i128::from(ua.y + ub.y) * i128::from(h_q1), den) as i64,
+    )
 }
 
 /// The inner corner at `v` of a turn between the unit normals `na`, `nb`,
@@ -579,7 +600,7 @@ fn neg(u: Unit) -> Unit {
 /// `v + side h (na + nb) / (1 + na.nb)` (the miter formula, well
 /// conditioned even at slight turns, unlike intersecting two nearly
 /// parallel rounded edges). `None` near a U-turn.
-fn inner_corner(v: Pt, na: Unit, nb: Unit, h_q1: i64, side: i64) -> Option<Pt> {
+pub(super) fn inner_corner(v: Pt, na: Unit, nb: Unit, h_q1: i64, side: i64) -> Option<Pt> {
     let one_plus = Q30 + na.dot(nb);
     // Beyond about 179 degrees the corner runs off to infinity.
     if one_plus < Q30 >> 14 {
@@ -599,7 +620,7 @@ fn inner_corner(v: Pt, na: Unit, nb: Unit, h_q1: i64, side: i64) -> Option<Pt> {
 /// either end: at a slight turn the kite is no bigger than the grid
 /// rounding): the pieces then tile. False otherwise (the kite reaches
 /// past a short piece), and nothing moves.
-fn cut_inner(a0: Pt, a1: &mut Pt, b0: &mut Pt, b1: Pt, i: Option<Pt>) -> bool {
+pub(super) fn cut_inner(a0: Pt, a1: &mut Pt, b0: &mut Pt, b1: Pt, i: Option<Pt>) -> bool {
     let Some(i) = i else {
         return false;
     };
