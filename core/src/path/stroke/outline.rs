@@ -65,12 +65,6 @@ use super::{LineCap, LineJoin, MiterLimit};
 /// segments' time for its 4 or 5 segments.
 pub(crate) const ARC_SETUP: u64 = 32;
 
-/// Numbers an inner corner takes whether its pieces are cut to tile (no
-/// segment sent) or not (two segments through the vertex, within the
-/// range square where its pieces are quiet): so a band whose pieces there
-/// are quiet need not find out which.
-const INNER_NUMBERS: u32 = 2;
-
 /// How far the stroke reaches on each side of the path, in half fine
 /// units (1/2048 px): `m` to the left of the direction of travel on
 /// screen, `p` to the right.
@@ -412,32 +406,19 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
             // Outer: the m side, forward from A to B; the outward normals
             // are -na, -nb. Inner: the p side.
             self.wedge(v, a.em, b.sm, neg(na), neg(nb), self.sides.m, join);
-            if a.quiet && b.quiet {
-                // Neither piece is built: the corner's numbers only.
-                self.sink.skipped(INNER_NUMBERS);
-            } else {
-                let i = inner_corner(v, na, nb, self.sides.p, 1);
-                if cut_inner(a.sp, &mut a.ep, &mut b.sp, b.ep, i) {
-                    self.sink.skipped(INNER_NUMBERS);
-                } else {
-                    self.seg(b.sp, v);
-                    self.seg(v, a.ep);
-                }
+            let i = inner_corner(v, na, nb, self.sides.p, 1);
+            if !cut_inner(a.sp, &mut a.ep, &mut b.sp, b.ep, i) {
+                self.seg(b.sp, v);
+                self.seg(v, a.ep);
             }
         } else {
             // Outer: the p side, emitted backward from B to A; outward
             // normals nb then na. Inner: the m side.
             self.wedge(v, b.sp, a.ep, nb, na, self.sides.p, join);
-            if a.quiet && b.quiet {
-                self.sink.skipped(INNER_NUMBERS);
-            } else {
-                let i = inner_corner(v, na, nb, self.sides.m, -1);
-                if cut_inner(a.sm, &mut a.em, &mut b.sm, b.em, i) {
-                    self.sink.skipped(INNER_NUMBERS);
-                } else {
-                    self.seg(a.em, v);
-                    self.seg(v, b.sm);
-                }
+            let i = inner_corner(v, na, nb, self.sides.m, -1);
+            if !cut_inner(a.sm, &mut a.em, &mut b.sm, b.em, i) {
+                self.seg(a.em, v);
+                self.seg(v, b.sm);
             }
         }
         self.quiet = false;
