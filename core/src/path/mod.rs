@@ -70,7 +70,12 @@
 //!   **nonzero** rule gives the exact stroke outline. An engine that
 //!   applies nonzero to each pixel's accumulated area (rather than to the
 //!   winding at each point) over-covers only the edge pixels of such
-//!   overlaps.
+//!   overlaps. A solid polyline's stroke (up to
+//!   [`stroke::union::MAX_UNION_POINTS`] points) then gets its overlaps'
+//!   intersections taken out and added back ([`stroke::union`]), so that
+//!   its coverage is the union's within 1/256 a pixel; other strokes
+//!   (closed polygons, dashes, curves, SVG paths, longer polylines) keep
+//!   that over-coverage at their overlaps' edge pixels.
 //!
 //! ## Bounded work
 //!
