@@ -3,8 +3,10 @@
 //! ellipses, arcs, sectors, rectangles, rounded rectangles, lines,
 //! polylines, triangles, SVG paths), strokes of any width, join, cap,
 //! dash pattern and alignment, linear and radial gradients, text in the
-//! bundled font, and a `TriangleList`, on an RGB565 display (three
-//! channels), with coordinates near the frame and far beyond the range.
+//! bundled font (`AaTextStyle` over `SANS_16`, any baseline and
+//! alignment, any opacity), and a `TriangleList`, on an RGB565 display
+//! (three channels), with coordinates near the frame and far beyond the
+//! range.
 //!
 //! Oracles that can fail:
 //! - band invariance: the same pixels and the same report in bands of
@@ -14,6 +16,19 @@
 //!   frames that share it;
 //! - window = frame: `render_window` of a sub-rectangle gives that part
 //!   of the whole frame, and sends nothing outside it;
+//! - the walk cache across frames: one `Renderer` kept over five
+//!   frames (as firmware keeps it: its 1, 4 or 64 walk-cache slots, its
+//!   band storage, maybe a shape cache), drawing the frame, a window of
+//!   it, a changed frame (the items shuffled, one maybe dropped, one
+//!   duplicated, one recoloured, the triangle list moved), a window of
+//!   that, and the first frame again, gives each time the pixels (and,
+//!   for whole frames, the report) of a fresh renderer without slots;
+//! - text ink inside the measured box: each text item, drawn alone
+//!   (white, opaque, over black), changes only pixels inside its
+//!   `Text::bounding_box()` (embedded-graphics' `Dimensions` contract,
+//!   "a rectangle that contains all drawn pixels"; `AaTextStyle`'s
+//!   `measure_string` gives each line's box), for positions within
+//!   2^16 px;
 //! - rejected shapes reported, the rest drawn: every drawing the canvas
 //!   rejected with a range error drew nothing (the frame without it is
 //!   the same, its report one shorter), and every drawing counts in the
@@ -30,7 +45,7 @@ use embedded_graphics::primitives::{
     Arc, Circle, CornerRadii, Ellipse, Line, Polyline, Rectangle, RoundedRectangle, Sector,
     Triangle,
 };
-use embedded_graphics::text::Text;
+use embedded_graphics::text::{Alignment, Baseline, Text, TextStyleBuilder};
 use libfuzzer_sys::fuzz_target;
 use softedge::canvas::ShapeEntry;
 use softedge::path::svg::SvgPath;
@@ -38,7 +53,7 @@ use softedge::path::{Segment, StrokeAlignment};
 use softedge::prelude::*;
 use softedge::style::{Gradient, Offset, Stop};
 use softedge::text::bundled::SANS_16;
-use softedge::text::AaTextStyle;
+use softedge::text::{AaTextStyle, RasterFont};
 use softedge_fuzz::Input;
 
 /// Items per frame.
@@ -59,7 +74,9 @@ enum Geometry {
     Polyline(Vec<Point>),
     Triangle(Point, Point, Point),
     Svg(String),
-    Text(String, Point),
+    /// The string, its position, and its layout: baseline `% 4`,
+    /// alignment `/ 4 % 3`.
+    Text(String, Point, u8),
 }
 
 /// How: a colour fill or stroke, or a gradient.
@@ -159,7 +176,7 @@ impl Item {
                             .unwrap_or(' ')
                     })
                     .collect();
-                Geometry::Text(s, point(inp, w, h))
+                Geometry::Text(s, point(inp, w, h), inp.u8())
             }
         };
         let stroke = inp.bool();
@@ -326,10 +343,34 @@ fn draw_item(c: &mut Canvas<'_, '_, 3, Rgb565>, item: &Item) {
                 go!(path)
             }
         }
-        Geometry::Text(s, at) => {
-            let _ = Text::new(s, *at, AaTextStyle::new(&SANS_16, p.color)).draw(c);
+        Geometry::Text(s, at, layout) => {
+            let _ = text(s, *at, *layout, p.color, p.opacity).draw(c);
         }
     }
+}
+
+/// A text item's `Text`: in the bundled font, laid out as `layout` says.
+fn text(
+    s: &str,
+    at: Point,
+    layout: u8,
+    color: Rgb565,
+    opacity: u16,
+) -> Text<'_, AaTextStyle<&'static RasterFont<'static>, Rgb565>> {
+    let baseline = [
+        Baseline::Alphabetic,
+        Baseline::Top,
+        Baseline::Middle,
+        Baseline::Bottom,
+    ][usize::from(layout % 4)];
+    let alignment =
+        [Alignment::Left, Alignment::Center, Alignment::Right][usize::from(layout / 4 % 3)];
+    let style = AaTextStyle::new(&SANS_16, color).opacity(Opacity::from_4096ths(opacity));
+    let layout = TextStyleBuilder::new()
+        .baseline(baseline)
+        .alignment(alignment)
+        .build();
+    Text::with_text_style(s, at, style, layout)
 }
 
 /// A display that keeps what it is sent, and whether anything was sent
@@ -415,6 +456,18 @@ impl Scene<'_> {
         if let Some((segments, entries)) = shapes {
             r = r.with_shape_cache(segments, entries);
         }
+        self.render_with(&mut r, window, alive)
+    }
+
+    /// One frame (or `window` of it) through renderer `r`, which the
+    /// caller keeps from frame to frame (its walk-cache slots, band
+    /// storage and shape cache with it).
+    fn render_with(
+        &self,
+        r: &mut Renderer<'_, 3>,
+        window: Option<Rectangle>,
+        alive: &[bool],
+    ) -> Frame {
         let mut store = [ListedTriangle::<3>::EMPTY; LIST];
         let mut list = TriangleList::new(&mut store);
         for (v, cs) in self.tris {
@@ -438,6 +491,40 @@ impl Scene<'_> {
             rejected,
         }
     }
+}
+
+/// Window = frame: `part`, rendered over `window`, is `whole` inside the
+/// window (clipped to the display) and sent nothing outside it.
+fn check_window(part: &Frame, whole: &Frame, window: Rectangle, w: u16, h: u16, what: &str) {
+    let win = window.intersection(&Rectangle::new(
+        Point::zero(),
+        Size::new(u32::from(w), u32::from(h)),
+    ));
+    for y in 0..i32::from(h) {
+        for x in 0..i32::from(w) {
+            let k = y as usize * usize::from(w) + x as usize;
+            if win.contains(Point::new(x, y)) {
+                assert_eq!(
+                    part.px[k], whole.px[k],
+                    "{what}: window {window:?}: pixel ({x}, {y}) differs from the frame"
+                );
+            } else {
+                assert_eq!(
+                    part.px[k], None,
+                    "{what}: window {window:?}: pixel ({x}, {y}) sent outside it"
+                );
+            }
+        }
+    }
+}
+
+/// The same pixels and report.
+fn check_same(a: &Frame, b: &Frame, w: u16, what: &str) {
+    if let Some(p) = diff(&a.px, &b.px, w) {
+        panic!("{what}: pixel {p:?} differs");
+    }
+    assert_eq!(a.skipped, b.skipped, "{what}: the report differs");
+    assert_eq!(a.rejected, b.rejected, "{what}: other rejections");
 }
 
 fn diff(a: &[Option<Rgb565>], b: &[Option<Rgb565>], w: u16) -> Option<(usize, usize)> {
@@ -482,6 +569,38 @@ fuzz_target!(|data: &[u8]| {
             inp.range(1, i32::from(h)) as u32,
         ),
     );
+    // The renderer kept over frames, and the frame that changes.
+    let kept_slots = [1, 4, 64][usize::from(inp.u8() % 3)];
+    let kept_rows = [1, 3, 16][usize::from(inp.u8() % 3)].min(h);
+    let kept_shapes = inp.bool();
+    let mut items_b = items.clone();
+    for i in 0..items_b.len() {
+        let j = i + usize::from(inp.u8()) % (items_b.len() - i);
+        items_b.swap(i, j);
+    }
+    if !items_b.is_empty() && inp.u8() % 4 == 0 {
+        items_b.remove(usize::from(inp.u8()) % items_b.len());
+    }
+    if !items_b.is_empty() && inp.u8() % 4 == 0 {
+        let k = usize::from(inp.u8()) % items_b.len();
+        let at = usize::from(inp.u8()) % (items_b.len() + 1);
+        items_b.insert(at, items_b[k].clone());
+    }
+    if !items_b.is_empty() && inp.bool() {
+        let k = usize::from(inp.u8()) % items_b.len();
+        items_b[k].paint.color = color(&mut inp);
+    }
+    let list_first_b = usize::from(inp.u8()) % (items_b.len() + 1);
+    let window_b = Rectangle::new(
+        Point::new(
+            inp.range(0, i32::from(w) - 1),
+            inp.range(0, i32::from(h) - 1),
+        ),
+        Size::new(
+            inp.range(1, i32::from(w)) as u32,
+            inp.range(1, i32::from(h)) as u32,
+        ),
+    );
     let scene = Scene {
         w,
         h,
@@ -489,6 +608,14 @@ fuzz_target!(|data: &[u8]| {
         tris: &tris,
         list_first,
     };
+    let other = Scene {
+        w,
+        h,
+        items: &items_b,
+        tris: &tris,
+        list_first: list_first_b,
+    };
+    let all_b = vec![true; items_b.len()];
     let all = vec![true; items.len()];
 
     let frame = scene.render(16, slots, None, &all);
@@ -529,24 +656,80 @@ fuzz_target!(|data: &[u8]| {
 
     // Window = frame.
     let part = scene.render(3, slots, Some(window), &all);
-    let win = window.intersection(&Rectangle::new(
-        Point::zero(),
-        Size::new(u32::from(w), u32::from(h)),
-    ));
-    for y in 0..i32::from(h) {
-        for x in 0..i32::from(w) {
-            let k = y as usize * usize::from(w) + x as usize;
-            if win.contains(Point::new(x, y)) {
-                assert_eq!(
-                    part.px[k], frame.px[k],
-                    "window {window:?}: pixel ({x}, {y}) differs from the frame"
-                );
-            } else {
-                assert_eq!(
-                    part.px[k], None,
-                    "window {window:?}: pixel ({x}, {y}) sent outside it"
-                );
-            }
+    check_window(&part, &frame, window, w, h, "a fresh renderer");
+
+    // The walk cache across frames: one renderer kept over frames, as
+    // firmware keeps it (its slots, band storage and maybe a shape cache
+    // with it), draws the frame, a window of it, another frame (the items
+    // shuffled, one maybe dropped, one duplicated, one recoloured: its
+    // edges the same, its colour not), a window of that, and the first
+    // frame again: each the pixels and report of a fresh renderer without
+    // slots (band invariance above makes `frame` one).
+    {
+        let mut acc = vec![0i32; BandBuffer::<3>::acc_len(w, kept_rows)];
+        let mut cover = vec![0i32; BandBuffer::<3>::cover_len(w, kept_rows)];
+        let mut slot_store = vec![WalkSlot::<3>::EMPTY; kept_slots];
+        let mut segments = vec![Segment::ZERO; cache_segments];
+        let mut entries = vec![ShapeEntry::EMPTY; cache_entries];
+        let mut r = Renderer::new(&mut acc, &mut cover, &mut slot_store, w, h, kept_rows)
+            .expect("a valid frame");
+        if kept_shapes {
+            r = r.with_shape_cache(&mut segments, &mut entries);
+        }
+        let what = format!(
+            "one renderer, {kept_slots} slots, bands of {kept_rows}, shape cache {kept_shapes}"
+        );
+        let fresh_b = other.render(kept_rows, 0, None, &all_b);
+        let a = scene.render_with(&mut r, None, &all);
+        check_same(&frame, &a, w, &format!("{what}, frame 1"));
+        let part = scene.render_with(&mut r, Some(window), &all);
+        check_window(&part, &frame, window, w, h, &format!("{what}, frame 2"));
+        let b = other.render_with(&mut r, None, &all_b);
+        check_same(&fresh_b, &b, w, &format!("{what}, frame 3 (changed)"));
+        let part = other.render_with(&mut r, Some(window_b), &all_b);
+        check_window(&part, &fresh_b, window_b, w, h, &format!("{what}, frame 4"));
+        let a = scene.render_with(&mut r, None, &all);
+        check_same(&frame, &a, w, &format!("{what}, frame 5 (the first again)"));
+    }
+
+    // Text ink inside the measured box: each text item drawn alone (white,
+    // opaque, over black) changes only pixels inside its `bounding_box()`
+    // (embedded-graphics' `Dimensions`: "a rectangle that contains all
+    // drawn pixels"; `AaTextStyle::measure_string` gives each line's).
+    // Positions beyond 2^16 px are left out: embedded-graphics' own
+    // layout arithmetic there overflows (and no ink reaches the display).
+    for item in &items {
+        let Geometry::Text(s, at, layout) = &item.geometry else {
+            continue;
+        };
+        if at.x.unsigned_abs() >= 1 << 16 || at.y.unsigned_abs() >= 1 << 16 {
+            continue;
+        }
+        let bb = text(s, *at, *layout, Rgb565::WHITE, 4096).bounding_box();
+        let mut white = item.clone();
+        white.paint.color = Rgb565::WHITE;
+        white.paint.opacity = 4096;
+        let alone = [white];
+        let only = Scene {
+            w,
+            h,
+            items: &alone,
+            tris: &[],
+            list_first: 1,
+        };
+        let f = only.render(16, 0, None, &[true]);
+        let (x1, y1) = (
+            i64::from(bb.top_left.x) + i64::from(bb.size.width),
+            i64::from(bb.top_left.y) + i64::from(bb.size.height),
+        );
+        for (k, px) in f.px.iter().enumerate() {
+            let (x, y) = ((k % usize::from(w)) as i32, (k / usize::from(w)) as i32);
+            let inside =
+                x >= bb.top_left.x && y >= bb.top_left.y && i64::from(x) < x1 && i64::from(y) < y1;
+            assert!(
+                inside || *px == Some(Rgb565::BLACK),
+                "text {s:?} at {at:?} (layout {layout}) inks ({x}, {y}) outside its box {bb:?}"
+            );
         }
     }
 

@@ -22,7 +22,11 @@
 //! the two on the middle of row `p.y`. The pen starts on the left edge of
 //! column `p.x`. A line's width (what alignment uses, what
 //! `measure_string` and `draw_string` return) is its advance rounded to
-//! whole pixels; the line height is the font's, rounded.
+//! whole pixels; the line height is the font's, rounded. The bounding box
+//! (`measure_string`'s, and so `Text::bounding_box()`) is the line's box,
+//! advance by ascender-to-descender rows, grown to every pixel the glyphs
+//! ink: it holds all drawn pixels, as embedded-graphics' `Dimensions`
+//! asks.
 //!
 //! ## Which `draw`
 //!
@@ -180,6 +184,64 @@ impl<S: GlyphSource, Col: Copy> AaTextStyle<S, Col> {
         (px.clamp(0, 1 << 21) as i32, missing)
     }
 
+    /// The pixels a line's glyphs ink, where `text::masked` draws them:
+    /// `(x0, y0, x1, y1)`, ends excluded (`None`: no ink). A glyph
+    /// without a mask (a cache without room) counts with its outline's
+    /// box, a pixel wider on each side (its curves flattened, its points
+    /// scaled on their own).
+    fn ink(&self, text: &str, position: Point, baseline: Baseline) -> Option<(i32, i32, i32, i32)> {
+        let src = &self.source;
+        let yb = masked::baseline_row(self.baseline_fine(position.y, baseline));
+        let phases = src.phases().clamp(1, 16);
+        let mut pen = i64::from(position.x) * i64::from(FINE_ONE);
+        let mut prev: Option<u16> = None;
+        let mut ink: Option<(i32, i32, i32, i32)> = None;
+        let px = |v: i64| v.clamp(-(1 << 21), 1 << 21) as i32;
+        for c in text.chars() {
+            let Some(g) = src.glyph(c) else {
+                prev = None;
+                continue;
+            };
+            if let Some(p) = prev {
+                pen += i64::from(src.kerning(p, g));
+            }
+            prev = Some(g);
+            let (gx, phase) = masked::drawn_x(pen, phases, self.grid);
+            pen += i64::from(src.advance(g));
+            let b = match src.mask(g, phase, |m| {
+                let (x, y) = (
+                    gx.saturating_add(m.left.into()),
+                    yb.saturating_add(m.top.into()),
+                );
+                (!m.is_empty()).then(|| {
+                    let (w, h) = (i32::from(m.width), i32::from(m.height));
+                    (x, y, x.saturating_add(w), y.saturating_add(h))
+                })
+            }) {
+                Some(b) => b,
+                None => src.outline(g).and_then(|o| {
+                    let r = o.font.face().glyph_bounding_box(o.id)?;
+                    let one = i64::from(FINE_ONE);
+                    let fx = i64::from(gx) * one + i64::from(phase) * one / i64::from(phases);
+                    let fy = i64::from(yb) * one;
+                    let (s, bits) = (o.scale, FINE_BITS);
+                    Some((
+                        px(((fx + s.x_units(r.x_min.into())) >> bits) - 1),
+                        px(((fy - s.y_units(r.y_max.into())) >> bits) - 1),
+                        px(((fx + s.x_units(r.x_max.into()) + one - 1) >> bits) + 1),
+                        px(((fy - s.y_units(r.y_min.into()) + one - 1) >> bits) + 1),
+                    ))
+                }),
+            };
+            if let Some(b) = b {
+                ink = Some(ink.map_or(b, |a| {
+                    (a.0.min(b.0), a.1.min(b.1), a.2.max(b.2), a.3.max(b.3))
+                }));
+            }
+        }
+        ink
+    }
+
     /// The rows of a line's box (ascender to descender) for a baseline.
     fn box_rows(&self, position: Point, baseline: Baseline) -> (i32, i32) {
         let m = self.source.line_metrics();
@@ -302,13 +364,26 @@ impl<S: GlyphSource, Col: PixelColor> TextRenderer for AaTextStyle<S, Col> {
         Ok(Point::new(position.x.saturating_add(w), position.y))
     }
 
+    /// The bounding box: the line's box (its advance rounded, from the
+    /// ascender to the descender line) grown to every pixel its glyphs
+    /// ink, as embedded-graphics' `Dimensions` asks of a drawable (glyphs
+    /// reach past their advance and below the descender: `J`, `_`).
     fn measure_string(&self, text: &str, position: Point, baseline: Baseline) -> TextMetrics {
         let (w, _) = self.width(text);
         let (top, bottom) = self.box_rows(position, baseline);
+        let mut b = (position.x, top, position.x.saturating_add(w), bottom);
+        if let Some(ink) = self.ink(text, position, baseline) {
+            b = (
+                b.0.min(ink.0),
+                b.1.min(ink.1),
+                b.2.max(ink.2),
+                b.3.max(ink.3),
+            );
+        }
         TextMetrics {
             bounding_box: Rectangle::new(
-                Point::new(position.x, top),
-                Size::new(w as u32, (bottom - top) as u32),
+                Point::new(b.0, b.1),
+                Size::new(b.2.abs_diff(b.0), b.3.abs_diff(b.1)),
             ),
             next_position: Point::new(position.x.saturating_add(w), position.y),
         }
