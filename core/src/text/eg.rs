@@ -193,21 +193,10 @@ impl<S: GlyphSource, Col: Copy> AaTextStyle<S, Col> {
         let src = &self.source;
         let yb = masked::baseline_row(self.baseline_fine(position.y, baseline));
         let phases = src.phases().clamp(1, 16);
-        let mut pen = i64::from(position.x) * i64::from(FINE_ONE);
-        let mut prev: Option<u16> = None;
+        let pen = i64::from(position.x) * i64::from(FINE_ONE);
         let mut ink: Option<(i32, i32, i32, i32)> = None;
         let px = |v: i64| v.clamp(-(1 << 21), 1 << 21) as i32;
-        for c in text.chars() {
-            let Some(g) = src.glyph(c) else {
-                prev = None;
-                continue;
-            };
-            if let Some(p) = prev {
-                pen += i64::from(src.kerning(p, g));
-            }
-            prev = Some(g);
-            let (gx, phase) = masked::drawn_x(pen, phases, self.grid);
-            pen += i64::from(src.advance(g));
+        for (g, gx, phase) in masked::Pens::new(src, text, pen, self.grid).flatten() {
             let b = match src.mask(g, phase, |m| {
                 let (x, y) = (
                     gx.saturating_add(m.left.into()),
@@ -298,21 +287,8 @@ impl<S: GlyphSource, Col: PixelColor> TextRenderer for AaTextStyle<S, Col> {
             let yb = masked::baseline_row(self.baseline_fine(position.y, baseline));
             let x = i64::from(position.x) * i64::from(FINE_ONE);
             let src = &self.source;
-            let phases = src.phases().clamp(1, 16);
-            let mut pen = x;
-            let mut prev: Option<u16> = None;
             let mut row = [0i32; 64];
-            for c in text.chars() {
-                let Some(g) = src.glyph(c) else {
-                    prev = None;
-                    continue;
-                };
-                if let Some(p) = prev {
-                    pen += i64::from(src.kerning(p, g));
-                }
-                prev = Some(g);
-                let (gx, phase) = masked::drawn_x(pen, phases, self.grid);
-                pen += i64::from(src.advance(g));
+            for (g, gx, phase) in masked::Pens::new(src, text, x, self.grid).flatten() {
                 let r = src.mask(g, phase, |m| {
                     let mut dec = m.rows();
                     let (left, top) = (gx + i32::from(m.left), yb + i32::from(m.top));

@@ -54,6 +54,7 @@ pub(crate) struct Line<'t> {
 /// The line's advance (kerning included), fine units, and its first
 /// character the source lacks (which advances by nothing).
 pub(crate) fn advance<S: GlyphSource>(src: &S, text: &str) -> (i64, Option<char>) {
+    // As [`Pens`] steps the pen, without placing the glyphs.
     let mut pen = 0i64;
     let mut missing = None;
     let mut prev: Option<u16> = None;
@@ -70,6 +71,55 @@ pub(crate) fn advance<S: GlyphSource>(src: &S, text: &str) -> (i64, Option<char>
         prev = Some(g);
     }
     (pen, missing)
+}
+
+/// The glyphs of a line, placed: for each character, from the pen at
+/// fine `x`, its glyph, drawn column and phase ([`drawn_x`]) after the
+/// kerning with the glyph before; a character the source lacks is given
+/// as `Err` (no advance, no kerning across it). Every walk along a line
+/// (its advance, drawing, ink) steps the pen so.
+pub(crate) struct Pens<'a, S> {
+    src: &'a S,
+    chars: core::str::Chars<'a>,
+    /// Fine units, after the last glyph given.
+    pen: i64,
+    prev: Option<u16>,
+    phases: u8,
+    grid: bool,
+}
+
+impl<'a, S: GlyphSource> Pens<'a, S> {
+    pub(crate) fn new(src: &'a S, text: &'a str, x: i64, grid: bool) -> Self {
+        Self {
+            src,
+            chars: text.chars(),
+            pen: x,
+            prev: None,
+            phases: src.phases().clamp(1, 16),
+            grid,
+        }
+    }
+}
+
+impl<S: GlyphSource> Iterator for Pens<'_, S> {
+    /// The glyph, its column and its phase.
+    type Item = Result<(u16, i32, u8), char>;
+
+    #[inline]
+    fn next(&mut self) -> Option<Self::Item> {
+        let c = self.chars.next()?;
+        let Some(g) = self.src.glyph(c) else {
+            self.prev = None;
+            return Some(Err(c));
+        };
+        if let Some(p) = self.prev {
+            self.pen += i64::from(self.src.kerning(p, g));
+        }
+        self.prev = Some(g);
+        let (gx, phase) = drawn_x(self.pen, self.phases, self.grid);
+        self.pen += i64::from(self.src.advance(g));
+        Some(Ok((g, gx, phase)))
+    }
 }
 
 /// A glyph's drawn column and phase for its pen at fine `x`: `x` rounded
@@ -132,20 +182,14 @@ pub(crate) fn draw_lines<'t, S: GlyphSource, const C: usize, Col>(
         if bottom <= rows.start || top >= rows.end {
             continue;
         }
-        let mut pen = line.x;
-        let mut prev: Option<u16> = None;
-        for c in line.text.chars() {
-            let Some(g) = src.glyph(c) else {
-                missing = missing.or(Some(c));
-                prev = None;
-                continue;
+        for placed in Pens::new(src, line.text, line.x, grid) {
+            let (g, gx, phase) = match placed {
+                Ok(p) => p,
+                Err(c) => {
+                    missing = missing.or(Some(c));
+                    continue;
+                }
             };
-            if let Some(p) = prev {
-                pen += i64::from(src.kerning(p, g));
-            }
-            prev = Some(g);
-            let (gx, phase) = drawn_x(pen, phases, grid);
-            pen += i64::from(src.advance(g));
             let at = Placed {
                 x: gx,
                 y: yb,
