@@ -1089,15 +1089,6 @@ mod tests {
         }
     }
 
-    /// `over_flat_row` against a reference written out here (running
-    /// coverage, its share, `p + floor((f - p) s / 2^16)` in 64 bits): the
-    /// values it leaves, tags that stay true (a pixel tagged with an entry
-    /// holds exactly that entry's value), the changes it clears, and a
-    /// drawn extent that holds every pixel it changed (the flush resolves
-    /// only those). Rows start with pixels tagged with random palette
-    /// entries (holding their values) or `MIXED` with random values; the
-    /// colour has a tag or (palette full) none; the band keeps tags or is
-    /// dense.
     /// Two pixels a step stores what one a step stores, for every start
     /// and length (odd ones leave a pixel for the last step).
     #[test]
@@ -1115,6 +1106,15 @@ mod tests {
         }
     }
 
+    /// `over_flat_row` against a reference written out here (running
+    /// coverage, its share, `p + floor((f - p) s / 2^16)` in 64 bits): the
+    /// values it leaves, tags that stay true (a pixel tagged with an entry
+    /// holds exactly that entry's value), the changes it clears, and a
+    /// drawn extent that holds every pixel it changed (the flush resolves
+    /// only those). Rows start with pixels tagged with random palette
+    /// entries (holding their values) or `MIXED` with random values; the
+    /// colour has a tag or (palette full) none; the band keeps tags or is
+    /// dense.
     #[test]
     fn over_flat_rows_match_the_reference_and_mark_every_drawn_pixel() {
         const C: usize = 3;
