@@ -145,7 +145,7 @@ impl<S: SegmentSink + ?Sized> PathSink for Flattener<'_, S> {
 mod tests {
     extern crate std;
     use super::*;
-    use crate::path::testing::Lcg;
+    use crate::path::testing::{Lcg, Numbering};
 
     #[derive(Default)]
     struct Sum {
@@ -159,26 +159,6 @@ mod tests {
             self.area2 += i128::from(a.x) * i128::from(b.y) - i128::from(b.x) * i128::from(a.y);
             self.balance.0 += i64::from(b.x - a.x);
             self.balance.1 += i64::from(b.y - a.y);
-        }
-    }
-
-    /// Numbers segments as a band's canvas does (skipped ones counted).
-    struct Numbering {
-        window: Option<(i32, i32)>,
-        next: u32,
-        segs: std::vec::Vec<(u32, FinePoint, FinePoint)>,
-    }
-
-    impl SegmentSink for Numbering {
-        fn segment(&mut self, a: FinePoint, b: FinePoint) {
-            self.segs.push((self.next, a, b));
-            self.next += 1;
-        }
-        fn window(&self) -> Option<(i32, i32)> {
-            self.window
-        }
-        fn skipped(&mut self, n: u32) {
-            self.next += n;
         }
     }
 

@@ -199,6 +199,7 @@ impl Default for Tolerance {
 /// random numbers they draw.
 #[cfg(test)]
 pub(crate) mod testing {
+    extern crate std;
     use super::SegmentSink;
     use crate::geom::FinePoint;
 
@@ -220,6 +221,27 @@ pub(crate) mod testing {
         /// A number below `m` (`m > 0`) from the next state's top 31 bits.
         pub fn below(&mut self, m: u64) -> u64 {
             (self.next_u64() >> 33) % m
+        }
+    }
+
+    /// Numbers segments as a band's walk cache would, within `window`
+    /// (fine rows): each sent segment with its number; skipped ones count.
+    pub struct Numbering {
+        pub window: Option<(i32, i32)>,
+        pub next: u32,
+        pub segs: std::vec::Vec<(u32, FinePoint, FinePoint)>,
+    }
+
+    impl SegmentSink for Numbering {
+        fn segment(&mut self, a: FinePoint, b: FinePoint) {
+            self.segs.push((self.next, a, b));
+            self.next += 1;
+        }
+        fn window(&self) -> Option<(i32, i32)> {
+            self.window
+        }
+        fn skipped(&mut self, n: u32) {
+            self.next += n;
         }
     }
 

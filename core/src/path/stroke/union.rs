@@ -1080,7 +1080,7 @@ mod tests {
 
     use super::*;
     use crate::geom::FinePoint;
-    use crate::path::testing::{Lcg, Tally};
+    use crate::path::testing::{Lcg, Numbering, Tally};
     use crate::path::{Polyline, Shape};
 
     const JOINS: [LineJoin; 3] = [LineJoin::Miter, LineJoin::Round, LineJoin::Bevel];
@@ -1161,26 +1161,6 @@ mod tests {
             }
             assert_eq!(sum, alone.area2, "case {k}");
             assert!(outline.closed(), "case {k}");
-        }
-    }
-
-    /// Numbers a stroke's segments as a band would, within `window`.
-    struct Numbering {
-        window: Option<(i32, i32)>,
-        next: u32,
-        segs: Vec<(u32, FinePoint, FinePoint)>,
-    }
-
-    impl SegmentSink for Numbering {
-        fn segment(&mut self, a: FinePoint, b: FinePoint) {
-            self.segs.push((self.next, a, b));
-            self.next += 1;
-        }
-        fn window(&self) -> Option<(i32, i32)> {
-            self.window
-        }
-        fn skipped(&mut self, n: u32) {
-            self.next += n;
         }
     }
 
