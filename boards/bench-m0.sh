@@ -9,12 +9,12 @@
 # (AA flat RGB, direct and listed) the screen with slanted cells in 16-
 # and 3-row bands.
 # Then (issue 16) a filled circle, a stroked arc gauge and a line chart (stroked
-# in every band, or recorded once per frame into a SegmentBuffer) alone on the
-# frame, softedge (AaStyle) against embedded-graphics (PrimitiveStyle):
+# in every band, or through a shape cache empty when the frame starts) alone
+# on the frame, softedge (AaStyle) against embedded-graphics (PrimitiveStyle):
 # the frame's instructions and the shape's marginal cost (frame with the
 # shape - the same renderer's frame without it); and (issue 15) a dial
-# scene rendered whole and in a 20x20 dirty rectangle (directly, and with
-# its curved shapes recorded once per frame), with the bytes an
+# scene rendered whole and in a 20x20 dirty rectangle (directly, and
+# through a shape cache), with the bytes an
 # ST7789 would be sent over SPI:
 #     pixels * 2 + windows * (3 command + 8 parameter bytes)
 # (CASET, RASET, RAMWR per window; softedge sends a window per band).
@@ -220,17 +220,18 @@ END {
     }
     # The line chart of ui.rs: 60 points 4 px apart, stroke 3 px, miter
     # joins, butt caps; softedge strokes it in every band it meets, or
-    # once per frame into a SegmentBuffer filled in every band
-    # (e-g draws its polyline again for the second column).
+    # through a shape cache (`Renderer::with_shape_cache`, empty when the
+    # frame starts: described in the first band, filled from the cache in
+    # the others; e-g draws its polyline again for the second column).
     printf "\nA line chart (60 points, stroke 3 px, miter joins), instructions; marginal as above:\n\n"
-    printf "| renderer | chart, marginal | chart, frame | recorded once per frame, marginal | recorded, frame |\n"
+    printf "| renderer | chart, marginal | chart, frame | shape cache, marginal | shape cache, frame |\n"
     printf "| --- | ---: | ---: | ---: | ---: |\n"
     for (i = 1; i <= ns; i++) {
         r = sorder[i]
         if (!((r, "chart") in shape)) continue
         printf "| %s | %s | %s | %s | %s |\n", (r in slabel ? slabel[r] : r), \
             group(shape[r, "chart"] - shape[r, "none"]), group(shape[r, "chart"]), \
-            group(shape[r, "chart_recorded"] - shape[r, "none"]), group(shape[r, "chart_recorded"])
+            group(shape[r, "chart_cached"] - shape[r, "none"]), group(shape[r, "chart_cached"])
     }
     ilabel["copy64"] = "64x64 Rgb565 sprite, unscaled at a whole pixel (copy)"
     ilabel["rotated30"] = "64x64 Rgb565 sprite rotated 30° (bilinear)"
@@ -247,8 +248,6 @@ END {
         printf "\n(frame without an image: %s)\n", group(image["none"])
     }
     rlabel["aa_rgb"] = "softedge AA, `render` / `render_window`, 16-row bands"
-    rlabel["aa_rgb_recorded"] = "softedge AA, the same, the arcs and the disc recorded in the frame (26 112 B of segments)"
-    rlabel["aa_rgb_prerecorded"] = "softedge AA, the same, the arcs and the disc recorded before the frame"
     rlabel["aa_rgb_cache_first"] = "softedge AA, the same through a shape cache (`Renderer::with_shape_cache`, 25.6 KB of segments), its first frame"
     rlabel["aa_rgb_cached"] = "softedge AA, the same through the shape cache, a later frame"
     rlabel["eg_fill"] = "e-g aliased, framebuffer; window: the shapes meeting it, `clipped`"

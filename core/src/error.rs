@@ -149,8 +149,10 @@ pub enum DrawError {
     ColorCount,
     /// Two non-adjacent edges of the polygon touch or cross.
     SelfIntersecting,
-    /// A recorded outline lost segments: its
-    /// [`SegmentBuffer`](crate::path::SegmentBuffer) was too small.
+    /// An outline lost segments ([`Outline::complete`] is false: a
+    /// recording that ran out of room).
+    ///
+    /// [`Outline::complete`]: crate::canvas::Outline::complete
     Incomplete,
     /// A [`TriangleList`](crate::canvas::TriangleList) has no room for
     /// another triangle.

@@ -15,7 +15,7 @@
 //! insns <renderer> <workload> <triangles drawn> <band rows> <instructions>
 //! cache <slots> <cache bytes> <band rows> <band buffer bytes> <instructions>
 //! cache_listed <slots> <cache bytes> <band rows> <band buffer bytes> <instructions>
-//! shape <renderer> <none|circle|gauge|gauge_round> <instructions>
+//! shape <renderer> <none|circle|gauge|gauge_round|chart|chart_cached> <instructions>
 //! redraw <renderer> <full|window> <instructions> <windows> <pixels> <SPI bytes>
 //! panel <band rows> <band buffer bytes> <whole|partial> <instructions>
 //! image <none|copy64|rotated30|icon48> <instructions> <image pixels>
@@ -361,50 +361,6 @@ fn main() -> ! {
             || ui::softedge_scene_stream(window, &mut bufs).is_ok(),
             counted,
         );
-        // The same scene with its curved shapes recorded once per frame
-        // (`ui::softedge_scene_recorded`), and recorded before the frame
-        // (`ui::softedge_scene_from`: they do not change): the same
-        // pixels, tested.
-        let mut spi = SpiCounter::new(side, side);
-        let counted = ui::softedge_scene_recorded(window, &mut bufs, &mut spi)
-            .ok()
-            .map(|()| spi);
-        bench.redraw(
-            "aa_rgb_recorded",
-            what,
-            ui::BAND_ROWS,
-            || {
-                ui::scene_stream(&mut bufs, |b, sink| {
-                    ui::softedge_scene_recorded(window, b, sink)
-                })
-                .is_ok()
-            },
-            counted,
-        );
-        let mut store = [Segment::default(); ui::SCENE_STORE];
-        if let Ok(rec) = ui::RecordedCurves::record(&mut store) {
-            let mut spi = SpiCounter::new(side, side);
-            let counted = ui::softedge_scene_from(&rec, window, &mut bufs, &mut spi)
-                .ok()
-                .map(|()| spi);
-            bench.redraw(
-                "aa_rgb_prerecorded",
-                what,
-                ui::BAND_ROWS,
-                || {
-                    ui::scene_stream(&mut bufs, |b, sink| {
-                        ui::softedge_scene_from(&rec, window, b, sink)
-                    })
-                    .is_ok()
-                },
-                counted,
-            );
-        } else {
-            bench.ok = false;
-            Line::new()
-                .text("error the dial scene's curves do not fit their store")
-                .print();
-        }
         // The scene through a renderer with a shape cache
         // (`ui::softedge_scene_cached`): its first frame describes the
         // shapes into the empty cache, the later ones fill them from it

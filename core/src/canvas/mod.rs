@@ -104,10 +104,9 @@ pub trait Outline {
         self.segments(|a, b| sink.segment(a, b));
     }
 
-    /// False when the outline is known to have lost segments (a
-    /// [`SegmentBuffer`](crate::path::SegmentBuffer) that overflowed): it
-    /// is then refused with [`DrawError::Incomplete`] in every band. The
-    /// default is true.
+    /// False when the outline is known to have lost segments (a recording
+    /// that ran out of room): it is then refused with
+    /// [`DrawError::Incomplete`] in every band. The default is true.
     fn complete(&self) -> bool {
         true
     }
@@ -479,7 +478,8 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
-        if let Some(c) = shape.key().and_then(|k| k.circle()) {
+        let key = self.key_of(shape);
+        if let Some(c) = key.and_then(|k| k.circle()) {
             let q = u64::from(c.radius) * 4;
             if let Some(r) = self.exact_circle(c.centre, q, 0, fill, rule, blend, opacity) {
                 return r;
@@ -487,12 +487,13 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         }
         let tol = crate::path::Tolerance::DEFAULT;
         let kept = self.kept_outline(
-            || shape.key().map(|k| retained::OutlineKey::fill(k, tol)),
+            || key.map(|k| retained::OutlineKey::fill(k, tol)),
             || paths::shape_bounds(shape),
             |buf| {
                 shape.fill_with(tol, buf);
                 true
             },
+            &|sink| shape.describe(sink),
             |c, outline| c.fill_with(outline, fill, rule, blend, opacity),
         );
         if let Some(r) = kept {
@@ -529,7 +530,8 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         blend: Blend,
         opacity: Opacity,
     ) -> Result<(), DrawError> {
-        if let Some(c) = shape.key().and_then(|k| k.circle()) {
+        let key = self.key_of(shape);
+        if let Some(c) = key.and_then(|k| k.circle()) {
             // Without dashes, the ring between radii `r + o` and `r - i`
             // (`Circle::stroke_with`), exact in quarter fine units.
             let dashed = style.dash.is_some_and(|d| !d.is_solid());
@@ -546,7 +548,7 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
                 }
             }
         }
-        if let Some(a) = shape.key().and_then(|k| k.arc()) {
+        if let Some(a) = key.and_then(|k| k.arc()) {
             if let Some(r) = self.exact_arc(&a, style, fill, blend, opacity) {
                 return r;
             }
@@ -554,13 +556,10 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         let serial = self.next_serial();
         let tol = crate::path::Tolerance::DEFAULT;
         let kept = self.kept_outline(
-            || {
-                shape
-                    .key()
-                    .and_then(|k| retained::OutlineKey::stroke(k, style, tol))
-            },
+            || key.and_then(|k| retained::OutlineKey::stroke(k, style, tol)),
             || paths::Stroked::<S>::widen(paths::shape_bounds(shape), style),
             |buf| shape.stroke_with(style, tol, buf).is_ok(),
+            &|sink| shape.describe(sink),
             |c, outline| {
                 c.paint_outline(serial, outline, FillRule::NonZero, fill, blend, opacity)
                     .inspect_err(|&e| c.skip(serial, e))
@@ -790,23 +789,35 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         Some(Ok(()))
     }
 
+    /// The key of `shape` ([`Shape::key`](crate::path::Shape::key)); not
+    /// asked for without a shape cache when it would read the shape's
+    /// points ([`Shape::key_reads_points`](crate::path::Shape::key_reads_points)):
+    /// only a cache uses such a key.
+    fn key_of<S: crate::path::Shape + ?Sized>(&self, shape: &S) -> Option<crate::path::ShapeKey> {
+        if self.shapes.is_none() && shape.key_reads_points() {
+            return None;
+        }
+        shape.key()
+    }
+
     /// `paint` of the shape cache's outline of `key` (made from `bounds`
-    /// and `describe` if the cache has none yet: see
-    /// [`ShapeCache`]); `None` without a cache, a key or a kept outline:
-    /// draw the shape directly. The cache is taken out of the canvas for
-    /// the painting and put back.
+    /// and `describe` if the cache has none yet; `path` describes the
+    /// shape: see [`ShapeCache`]); `None` without a cache, a key or a kept
+    /// outline: draw the shape directly. The cache is taken out of the
+    /// canvas for the painting and put back.
     fn kept_outline<R>(
         &mut self,
         key: impl FnOnce() -> Option<retained::OutlineKey>,
         bounds: impl FnOnce() -> Option<FineRect>,
         describe: impl Fn(&mut crate::path::SegmentBuffer<'_>) -> bool,
+        path: &dyn Fn(&mut dyn crate::geom::PathSink),
         paint: impl FnOnce(&mut Self, &paths::Kept<'_>) -> R,
     ) -> Option<R> {
         self.shapes.as_ref()?;
         let key = key()?;
         let mut shapes = self.shapes.take()?;
         let r = shapes
-            .outline(key, bounds, describe)
+            .outline(key, bounds, describe, path)
             .map(|(segments, bounds)| {
                 let outline = paths::Kept {
                     segments: shapes.segments(segments),

@@ -22,6 +22,8 @@
 use core::ops::Range;
 
 use super::FineRect;
+use crate::geom::PathSink;
+use crate::path::shape::{same_stream, write_stream};
 use crate::path::{
     LineCap, LineJoin, MiterLimit, Segment, SegmentBuffer, ShapeKey, StrokeAlignment, StrokeStyle,
     Tolerance,
@@ -250,13 +252,19 @@ impl<'a> ShapeCache<'a> {
     /// The kept outline of `key`: its segments and its bounds. Not kept
     /// yet: `bounds` and `describe` (false on a failure) make it, into the
     /// free segments, if an entry and room are found. `None`: draw the
-    /// shape directly.
+    /// shape directly. `path` describes the shape: for a shape known by
+    /// its description (a polyline, a polygon, an SVG path) the entry keeps
+    /// that description before the outline, and an outline is used only
+    /// when the description kept is `path`'s, point for point.
     pub(crate) fn outline(
         &mut self,
         key: OutlineKey,
         bounds: impl FnOnce() -> Option<FineRect>,
         describe: impl Fn(&mut SegmentBuffer<'_>) -> bool,
+        path: &dyn Fn(&mut dyn PathSink),
     ) -> Option<(Range<usize>, Option<FineRect>)> {
+        // The description's segments at the front of the entry's.
+        let head = key.shape.stream_segments();
         let frame = self.frame;
         let n = self.entries.len();
         let from = if self.cursor < n { self.cursor } else { 0 };
@@ -272,16 +280,21 @@ impl<'a> ShapeCache<'a> {
             let e = self.entries.get_mut(i)?;
             let first_this_frame = e.frame != frame;
             e.frame = frame;
-            if e.kept() && e.end() <= held {
-                self.hits += 1;
-                let start = e.start as usize;
-                return Some((start..start + e.len as usize, e.bounds));
-            }
-            // Drawn directly (its outline found no room, or its stroke
-            // failed): tried again once a frame, room may have been freed
-            // since. Or kept over other segments than these (the entries
-            // were given other slices): described again.
-            if !e.kept() && !first_this_frame {
+            let (start, end) = (e.start as usize, e.end());
+            let (kept, bounds) = (e.kept(), e.bounds);
+            if kept && end <= held && head <= end - start {
+                let kept_path = self.segments.get(start..start + head).unwrap_or_default();
+                if head == 0 || same_stream(path, kept_path, key.shape.stream_points()) {
+                    self.hits += 1;
+                    return Some((start + head..end, bounds));
+                }
+                // Another shape of the same hash: this one's outline
+                // replaces it.
+            } else if !kept && !first_this_frame {
+                // Drawn directly (its outline found no room, or its stroke
+                // failed): tried again once a frame, room may have been
+                // freed since. (Or kept over other segments than these, the
+                // entries given other slices: described again.)
                 return None;
             }
             retry = Some(i);
@@ -303,12 +316,15 @@ impl<'a> ShapeCache<'a> {
         let mut kept = None;
         for attempt in 0..2 {
             let start = self.entries.iter().map(ShapeEntry::end).max().unwrap_or(0);
-            let mut buf = SegmentBuffer::new(self.segments.get_mut(start..).unwrap_or_default());
-            if !describe(&mut buf) {
+            let free = self.segments.get_mut(start..).unwrap_or_default();
+            let fits = head <= free.len();
+            let (kept_path, rest) = free.split_at_mut(head.min(free.len()));
+            let mut buf = SegmentBuffer::new(rest);
+            if fits && !describe(&mut buf) {
                 break;
             }
-            if !buf.overflowed() {
-                kept = Some((start, buf.segments().len()));
+            if fits && !buf.overflowed() && (head == 0 || write_stream(path, kept_path)) {
+                kept = Some((start, head + buf.segments().len()));
                 break;
             }
             // Short of room: drop what this frame has not drawn and move
@@ -328,7 +344,7 @@ impl<'a> ShapeCache<'a> {
         let (start, len) = kept?;
         (e.start, e.len) = (start as u32, len as u32);
         self.records += 1;
-        Some((start..start + len, bounds))
+        Some((start + head..start + len, bounds))
     }
 
     /// Drops the outlines not drawn in this frame and moves the others to
@@ -416,7 +432,7 @@ mod tests {
             (1 + next(6000), next(3), next(3), next(3), dashed)
         });
         Item {
-            kind: next(8),
+            kind: next(11),
             c: FinePoint::new(next(72 * 1024) as i32 - 4096, next(56 * 1024) as i32 - 4096),
             r: 1 + (next(30_000) >> next(6)),
             r2: 1 + (next(30_000) >> next(6)),
@@ -490,18 +506,54 @@ mod tests {
                     it.c,
                     FinePoint::new(it.c.x + it.a * 97, it.c.y + it.s * 61),
                 )),
-                // No key: drawn directly, between shapes kept.
-                _ => {
-                    let pts = [
-                        it.c,
-                        FinePoint::new(it.c.x + it.a * 97, it.c.y + it.s * 61),
-                        FinePoint::new(it.c.x + it.s * 53, it.c.y + it.r as i32),
-                    ];
-                    put(&crate::path::Polygon::new(&pts))
+                // Kept by their descriptions.
+                7 => put(&crate::path::Polygon::new(&points(it))),
+                8 => put(&crate::path::Polyline::new(&points(it))),
+                9 => {
+                    let [p, q, r] = points(it).map(|p| (p.x as f64 / 1024.0, p.y as f64 / 1024.0));
+                    let d = std::format!(
+                        "M {} {} Q {} {} {} {} C {} {} {} {} {} {} Z",
+                        p.0,
+                        p.1,
+                        q.0,
+                        q.1,
+                        r.0,
+                        r.1,
+                        p.0,
+                        r.1,
+                        q.0,
+                        p.1,
+                        p.0 + 3.0,
+                        p.1
+                    );
+                    if let Ok(svg) = crate::path::svg::SvgPath::new(&d) {
+                        put(&svg)
+                    }
                 }
+                // No key: drawn directly, between shapes kept.
+                _ => put(&NoKey(crate::path::Polygon::new(&points(it)))),
             }
         };
         shape(c);
+    }
+
+    /// The three vertices of an item's polygon, polyline or SVG path.
+    fn points(it: &Item) -> [FinePoint; 3] {
+        [
+            it.c,
+            FinePoint::new(it.c.x + it.a * 97, it.c.y + it.s * 61),
+            FinePoint::new(it.c.x + it.s * 53, it.c.y + it.r as i32),
+        ]
+    }
+
+    /// A shape of another crate: described as the shape it wraps, without
+    /// a key.
+    struct NoKey<S>(S);
+
+    impl<S: crate::path::Shape> crate::path::Shape for NoKey<S> {
+        fn describe<P: PathSink + ?Sized>(&self, sink: &mut P) {
+            self.0.describe(sink);
+        }
     }
 
     /// Object-safe drawing of one shape (fill or stroke).
@@ -707,8 +759,8 @@ mod tests {
             color: 2000,
             ..disc(x, 20, 9)
         };
-        // A disc, a polygon (no key), a disc.
-        let scene = [item(0, 16), item(7, 30), item(0, 44)];
+        // A disc, a shape without a key, a disc.
+        let scene = [item(0, 16), item(10, 30), item(0, 44)];
         let mut segs = std::vec![Segment::default(); 2048];
         let mut entries = std::vec![ShapeEntry::EMPTY; 4];
         let want = frame(&scene, 48, None).0;
@@ -756,5 +808,83 @@ mod tests {
             let got = frame(&scene, 16, Some((&mut small, &mut entries, f))).0;
             assert!(got == want, "frame {f}");
         }
+    }
+
+    /// A polyline, the polygon of the same points and the same polyline
+    /// moved by one fine unit: three outlines, each kept by its own entry
+    /// and found again in every band and frame; the pixels those of the
+    /// shapes drawn directly.
+    #[test]
+    fn polylines_and_polygons_are_kept_by_their_points() {
+        let line = |x: i32| Item {
+            kind: 8,
+            a: 30,
+            s: -20,
+            stroke: Some((2500, 1, 1, 0, false)),
+            ..disc(x, 24, 9)
+        };
+        let moved = Item {
+            c: FinePoint::new(line(20).c.x + 1, line(20).c.y),
+            ..line(20)
+        };
+        let scene = [
+            line(20),
+            Item {
+                kind: 7,
+                ..line(20)
+            },
+            moved,
+        ];
+        let mut segs = std::vec![Segment::default(); 4096];
+        let mut entries = std::vec![ShapeEntry::EMPTY; 4];
+        let want = frame(&scene, 48, None).0;
+        for f in 0..3 {
+            let (got, _, stats) = frame(&scene, 8, Some((&mut segs, &mut entries, f)));
+            assert!(got == want, "frame {f}");
+            // Six bands: three outlines described in the first band of
+            // the first frame, found in every other lookup.
+            assert_eq!(stats, if f == 0 { (15, 3) } else { (18, 0) }, "frame {f}");
+        }
+        assert_eq!(ShapeCache::new(&mut segs, &mut entries, 3).used().0, 3);
+    }
+
+    /// Two different shapes under one key (what a hash's collision would
+    /// give): the description kept is compared point for point, so the
+    /// second never gets the first's outline; each takes the entry over.
+    #[test]
+    fn a_key_shared_by_two_descriptions_never_gives_the_wrong_outline() {
+        use crate::path::{Polyline, Shape};
+        let a = [FinePoint::new(0, 0), FinePoint::new(9000, 4000)];
+        let b = [FinePoint::new(0, 0), FinePoint::new(9000, 4001)];
+        let key = OutlineKey::fill(Polyline::new(&a).key().unwrap(), Tolerance::DEFAULT);
+        let mut segs = std::vec![Segment::default(); 64];
+        let mut entries = std::vec![ShapeEntry::EMPTY; 2];
+        let mut cache = ShapeCache::new(&mut segs, &mut entries, 1);
+        let mut lookup = |pts: &[FinePoint], mark: i32| {
+            let shape = Polyline::new(pts);
+            let r = cache.outline(
+                key,
+                || None,
+                |buf| {
+                    crate::path::SegmentSink::segment(
+                        buf,
+                        FinePoint::new(mark, 0),
+                        FinePoint::new(mark, 1),
+                    );
+                    true
+                },
+                &|sink| shape.describe(sink),
+            );
+            let (range, _) = r.unwrap();
+            let got = cache.segments(range);
+            assert_eq!(got.len(), 1);
+            got[0].from.x
+        };
+        assert_eq!(lookup(&a, 1), 1);
+        assert_eq!(lookup(&a, 2), 1, "kept");
+        assert_eq!(lookup(&b, 3), 3, "not a's outline");
+        assert_eq!(lookup(&b, 4), 3, "kept");
+        assert_eq!(lookup(&a, 5), 5, "not b's outline");
+        assert_eq!(cache.stats(), (2, 3));
     }
 }

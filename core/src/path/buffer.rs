@@ -2,10 +2,10 @@
 //! those a band of rows needs.
 //!
 //! Takes segments from any description; gives either a caller-provided
-//! slice filled with them ([`SegmentBuffer`], so that a shape is described
-//! once per frame and its segments walked for every band), or a
-//! [`SegmentSink`] that forwards only the segments whose vertical extent
-//! meets a band of rows ([`BandFilter`]).
+//! slice filled with them ([`SegmentBuffer`], what a shape cache keeps an
+//! outline in, so that a shape is described once and its segments walked
+//! for every band), or a [`SegmentSink`] that forwards only the segments
+//! whose vertical extent meets a band of rows ([`BandFilter`]).
 //!
 //! Per band, a segment entirely above or below the band's rows
 //! contributes nothing to any pixel in it (coverage accumulated along a
@@ -19,7 +19,8 @@ use crate::geom::FinePoint;
 
 use super::SegmentSink;
 
-/// A directed segment, as kept by [`SegmentBuffer`].
+/// A directed segment, as a [`ShapeCache`](crate::canvas::ShapeCache)
+/// keeps it.
 ///
 /// ```
 /// use softedge::geom::FinePoint;
@@ -46,81 +47,35 @@ impl Segment {
 }
 
 /// Collects segments into a caller-provided slice; what does not fit is
-/// counted, not stored (check [`overflowed`](Self::overflowed)).
-///
-/// A shape recorded once per frame (a stroke, a path, a run of glyphs)
-/// can then be filled in every band from the buffer (a
-/// [`canvas::Outline`](crate::canvas::Outline), filled by the nonzero
-/// rule for a stroke): the band walks only the segments that cross its
-/// rows, instead of describing, flattening and stroking the shape again.
-/// The segments, their order and so the pixels are those of the shape
-/// drawn directly. 16 bytes a segment.
-///
-/// ```
-/// use softedge::geom::FinePoint;
-/// use softedge::path::{Rectangle, Segment, SegmentBuffer, Shape};
-/// let mut store = [Segment::default(); 8];
-/// let mut buf = SegmentBuffer::new(&mut store);
-/// Rectangle::new(FinePoint::new(0, 0), 4096, 2048).fill(&mut buf);
-/// assert_eq!(buf.segments().len(), 4);
-/// assert!(!buf.overflowed());
-/// ```
+/// counted, not stored (check [`overflowed`](Self::overflowed)): how a
+/// [`ShapeCache`](crate::canvas::ShapeCache) keeps an outline. 16 bytes a
+/// segment.
 #[derive(Debug)]
-pub struct SegmentBuffer<'a> {
+pub(crate) struct SegmentBuffer<'a> {
     store: &'a mut [Segment],
     len: usize,
-    dropped: usize,
-    /// The corners of the box around the kept segments (meaningful when
-    /// `len > 0`).
-    lo: FinePoint,
-    hi: FinePoint,
+    overflowed: bool,
 }
 
 impl<'a> SegmentBuffer<'a> {
     /// An empty buffer over `store`.
-    pub fn new(store: &'a mut [Segment]) -> Self {
+    pub(crate) fn new(store: &'a mut [Segment]) -> Self {
         Self {
             store,
             len: 0,
-            dropped: 0,
-            lo: FinePoint::new(0, 0),
-            hi: FinePoint::new(0, 0),
+            overflowed: false,
         }
     }
 
-    /// The box around every point of the kept segments, as its smallest
-    /// and largest corners; `None` when none is kept.
-    pub fn extent(&self) -> Option<(FinePoint, FinePoint)> {
-        (self.len > 0).then_some((self.lo, self.hi))
-    }
-
     /// The segments kept, in the order received.
-    pub fn segments(&self) -> &[Segment] {
+    pub(crate) fn segments(&self) -> &[Segment] {
         self.store.get(..self.len).unwrap_or_default()
     }
 
     /// True when segments were dropped for lack of room (the kept ones are
     /// then not closed contours).
-    pub fn overflowed(&self) -> bool {
-        self.dropped > 0
-    }
-
-    /// How many segments were dropped.
-    pub fn dropped(&self) -> usize {
-        self.dropped
-    }
-
-    /// Empties the buffer.
-    pub fn clear(&mut self) {
-        self.len = 0;
-        self.dropped = 0;
-    }
-
-    /// Sends every kept segment to `sink`.
-    pub fn replay<S: SegmentSink + ?Sized>(&self, sink: &mut S) {
-        for s in self.segments() {
-            sink.segment(s.from, s.to);
-        }
+    pub(crate) fn overflowed(&self) -> bool {
+        self.overflowed
     }
 }
 
@@ -129,16 +84,9 @@ impl SegmentSink for SegmentBuffer<'_> {
         match self.store.get_mut(self.len) {
             Some(slot) => {
                 *slot = Segment { from, to };
-                if self.len == 0 {
-                    (self.lo, self.hi) = (from, from);
-                }
-                for p in [from, to] {
-                    self.lo = FinePoint::new(self.lo.x.min(p.x), self.lo.y.min(p.y));
-                    self.hi = FinePoint::new(self.hi.x.max(p.x), self.hi.y.max(p.y));
-                }
                 self.len += 1;
             }
-            None => self.dropped = self.dropped.saturating_add(1),
+            None => self.overflowed = true,
         }
     }
 }
@@ -150,15 +98,19 @@ impl SegmentSink for SegmentBuffer<'_> {
 ///
 /// ```
 /// use softedge::geom::FinePoint;
-/// use softedge::path::{BandFilter, Circle, SegmentBuffer, Segment, Shape};
+/// use softedge::path::{BandFilter, Circle, SegmentSink, Shape};
+/// #[derive(Default)]
+/// struct Count(usize);
+/// impl SegmentSink for Count {
+///     fn segment(&mut self, _: FinePoint, _: FinePoint) {
+///         self.0 += 1;
+///     }
+/// }
 /// let disc = Circle::new(FinePoint::new(50 * 1024, 50 * 1024), 20 * 1024);
-/// let mut store = [Segment::default(); 512];
-/// let mut buf = SegmentBuffer::new(&mut store);
-/// disc.fill(&mut buf);
-/// let all = buf.segments().len();
-/// buf.clear();
-/// disc.fill(&mut BandFilter::new(&mut buf, 48 * 1024, 56 * 1024)); // 8 rows
-/// assert!(buf.segments().len() < all / 4);
+/// let (mut all, mut band) = (Count::default(), Count::default());
+/// disc.fill(&mut all);
+/// disc.fill(&mut BandFilter::new(&mut band, 48 * 1024, 56 * 1024)); // 8 rows
+/// assert!(band.0 > 0 && band.0 < all.0 / 4);
 /// ```
 #[derive(Debug)]
 pub struct BandFilter<'s, S: SegmentSink + ?Sized> {
@@ -205,33 +157,25 @@ impl<S: SegmentSink + ?Sized> SegmentSink for BandFilter<'_, S> {
 
 #[cfg(test)]
 mod tests {
+    extern crate std;
     use super::*;
 
     #[test]
-    fn a_full_buffer_counts_what_it_drops() {
+    fn a_full_buffer_keeps_what_fits_and_says_it_overflowed() {
         let mut store = [Segment::default(); 2];
         let mut b = SegmentBuffer::new(&mut store);
-        for k in 0..5 {
+        for k in 0..2 {
             b.segment(FinePoint::new(k, 0), FinePoint::new(k, 1));
         }
-        assert_eq!((b.segments().len(), b.dropped()), (2, 3));
-        // The box holds the kept segments only.
-        assert_eq!(
-            b.extent(),
-            Some((FinePoint::new(0, 0), FinePoint::new(1, 1)))
-        );
-        b.clear();
-        assert!(!b.overflowed() && b.segments().is_empty());
-        assert_eq!(b.extent(), None);
-        b.segment(FinePoint::new(-5, 7), FinePoint::new(3, -2));
-        assert_eq!(
-            b.extent(),
-            Some((FinePoint::new(-5, -2), FinePoint::new(3, 7)))
-        );
+        assert!(!b.overflowed());
+        b.segment(FinePoint::new(7, 0), FinePoint::new(7, 1));
+        assert!(b.overflowed());
+        let kept: std::vec::Vec<i32> = b.segments().iter().map(|s| s.from.x).collect();
+        assert_eq!(kept, [0, 1]);
         let mut empty: [Segment; 0] = [];
         let mut b = SegmentBuffer::new(&mut empty);
         b.segment(FinePoint::new(0, 0), FinePoint::new(1, 1));
-        assert!(b.overflowed());
+        assert!(b.overflowed() && b.segments().is_empty());
     }
 
     #[test]

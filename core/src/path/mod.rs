@@ -95,8 +95,9 @@
 //!
 //! A description is deterministic and cheap to repeat, so a band engine
 //! may describe every shape again for every band, dropping what the band
-//! does not need with a [`BandFilter`]; or describe it once into a
-//! [`SegmentBuffer`] and walk the stored segments per band.
+//! does not need with a [`BandFilter`]; or keep its outline once in a
+//! [`ShapeCache`](crate::canvas::ShapeCache) and walk the kept segments
+//! per band.
 //!
 //! ## Accuracy
 //!
@@ -135,7 +136,8 @@ pub(crate) mod vector;
 pub use angle::Degrees;
 pub use arc::{MAX_ARC_SEGMENTS, MAX_ELLIPSE_SEGMENTS, MAX_RADIUS};
 pub use bezier::MAX_CURVE_SEGMENTS;
-pub use buffer::{BandFilter, Segment, SegmentBuffer};
+pub(crate) use buffer::SegmentBuffer;
+pub use buffer::{BandFilter, Segment};
 pub use flattener::Flattener;
 pub use segment::SegmentSink;
 pub use shape::{

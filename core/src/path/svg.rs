@@ -150,6 +150,14 @@ impl<'a> SvgPath<'a> {
 }
 
 impl super::Shape for SvgPath<'_> {
+    fn key(&self) -> Option<super::ShapeKey> {
+        super::ShapeKey::described(super::shape::DescribedKind::Svg, self)
+    }
+
+    fn key_reads_points(&self) -> bool {
+        true
+    }
+
     fn describe<P: PathSink + ?Sized>(&self, sink: &mut P) {
         // Checked in `new` (arcs included): this cannot fail, and the
         // arcs need not be described twice to check them again.

@@ -14,9 +14,8 @@
 //!   read-out's 20x20 pixels): softedge with `Renderer::render_window`,
 //!   embedded-graphics by clearing the rectangle in its framebuffer and
 //!   redrawing, clipped to it, the shapes whose bounding box meets it.
-//!   [`softedge_scene_recorded`] / [`softedge_scene_from`]: the same
-//!   scene with its curved shapes recorded into `SegmentBuffer`s in the
-//!   frame, or before it ([`RecordedCurves`]), the same pixels.
+//!   [`softedge_scene_cached`]: the same scene through a renderer with a
+//!   shape cache ([`SceneCache`]), the same pixels.
 //!
 //! Both sides draw the very same primitives (embedded-graphics geometry)
 //! in the same colours (Rgb565, which softedge takes as sRGB).
@@ -28,9 +27,7 @@ use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::{Arc, Circle, Polyline, PrimitiveStyle, Rectangle};
 use softedge::canvas::ShapeEntry;
-use softedge::color::IntoLinear;
-use softedge::draw::AaShape;
-use softedge::path::{Segment, SegmentBuffer, Shape as _};
+use softedge::path::Segment;
 use softedge::prelude::*;
 use softedge::render::Renderer as FrameRenderer;
 use softedge::tone::Curve;
@@ -124,10 +121,11 @@ pub enum Shape {
     /// [`chart`], stroked [`CHART_STROKE`] px, miter joins (e-g's
     /// polyline joins), butt caps.
     Chart,
-    /// The same chart stroked once per frame into a
-    /// [`SegmentBuffer`] and filled from it in every band
+    /// The same chart drawn the same way through a renderer with a shape
+    /// cache, empty when the frame starts: the chart's stroke is described
+    /// in the first band and filled from the cache in the others
     /// (embedded-graphics draws [`Chart`](Self::Chart) again).
-    ChartRecorded,
+    ChartCached,
 }
 
 impl Shape {
@@ -138,7 +136,7 @@ impl Shape {
         Shape::Gauge,
         Shape::GaugeRound,
         Shape::Chart,
-        Shape::ChartRecorded,
+        Shape::ChartCached,
     ];
 
     /// The name printed in the output.
@@ -149,7 +147,7 @@ impl Shape {
             Shape::Gauge => "gauge",
             Shape::GaugeRound => "gauge_round",
             Shape::Chart => "chart",
-            Shape::ChartRecorded => "chart_recorded",
+            Shape::ChartCached => "chart_cached",
         }
     }
 }
@@ -173,18 +171,48 @@ pub fn softedge_shape(shape: Shape, bufs: &mut Buffers<'_>) -> Result<(), FrameE
     Ok(())
 }
 
-/// Segments the recorded chart may have (its stroke has 228).
-pub const CHART_SEGMENTS: usize = 256;
+/// Segments of the chart's shape cache: its stroke has 228, its
+/// description (kept to compare) 31.
+pub const CHART_SEGMENTS: usize = 288;
 
-/// [`softedge_shape`] into any display.
-fn shape_into<D>(shape: Shape, bufs: Buffers<'_>, target: &mut D) -> Result<(), FrameError>
+/// [`softedge_shape`] into any display; the shape cache's (kept,
+/// described) outlines.
+fn shape_into<D>(shape: Shape, bufs: Buffers<'_>, target: &mut D) -> Result<(u32, u32), FrameError>
 where
     D: DrawTarget<Color = Rgb565> + OriginDimensions,
 {
-    if shape == Shape::ChartRecorded {
-        return chart_recorded(bufs, target);
+    if shape == Shape::ChartCached {
+        return chart_cached(bufs, target);
     }
-    let mut r = renderer(bufs.acc, bufs.cover, bufs.slots3)?;
+    shape_frame(shape, renderer(bufs.acc, bufs.cover, bufs.slots3)?, target)
+}
+
+/// The chart through a renderer with a shape cache on the stack (as a
+/// firmware's frame function would hold it), empty when the frame starts.
+#[inline(never)]
+fn chart_cached<D>(bufs: Buffers<'_>, target: &mut D) -> Result<(u32, u32), FrameError>
+where
+    D: DrawTarget<Color = Rgb565> + OriginDimensions,
+{
+    let mut segments = [Segment::ZERO; CHART_SEGMENTS];
+    let mut entries = [ShapeEntry::EMPTY; 2];
+    let r = renderer(bufs.acc, bufs.cover, bufs.slots3)?;
+    shape_frame(
+        Shape::Chart,
+        r.with_shape_cache(&mut segments, &mut entries),
+        target,
+    )
+}
+
+/// One frame of `shape` by `r`; the shape cache's (kept, described).
+fn shape_frame<D>(
+    shape: Shape,
+    mut r: FrameRenderer<'_, 3>,
+    target: &mut D,
+) -> Result<(u32, u32), FrameError>
+where
+    D: DrawTarget<Color = Rgb565> + OriginDimensions,
+{
     let report = r
         .render(target, &RGB565, [0; 3], |c| match shape {
             Shape::None => Ok(()),
@@ -195,52 +223,16 @@ where
             Shape::GaugeRound => gauge()
                 .into_styled(AaStyle::with_stroke(GAUGE_COLOR, GAUGE_STROKE).cap(LineCap::Round))
                 .draw(c),
-            Shape::Chart => chart().into_styled(chart_style()).draw(c),
-            // Drawn by `chart_recorded`.
-            Shape::ChartRecorded => Ok(()),
+            Shape::Chart | Shape::ChartCached => chart().into_styled(chart_style()).draw(c),
         })
         .map_err(|_| FrameError)?;
     black_box(report);
-    Ok(())
+    Ok(r.shape_stats())
 }
 
 /// The chart's style: [`CHART_STROKE`] px, miter joins, butt caps.
 fn chart_style() -> AaStyle<'static, Rgb565> {
     AaStyle::with_stroke(GAUGE_COLOR, CHART_STROKE)
-}
-
-/// The chart stroked once into a segment buffer (on the stack, 16 bytes
-/// a segment), then filled from it in every band.
-#[inline(never)]
-fn chart_recorded<D>(bufs: Buffers<'_>, target: &mut D) -> Result<(), FrameError>
-where
-    D: DrawTarget<Color = Rgb565> + OriginDimensions,
-{
-    let mut store = [Segment::default(); CHART_SEGMENTS];
-    let mut outline = SegmentBuffer::new(&mut store);
-    let style = chart_style();
-    chart()
-        .shape()
-        .stroke(&style.stroke, &mut outline)
-        .map_err(|_| FrameError)?;
-    if outline.overflowed() {
-        return Err(FrameError);
-    }
-    let color = GAUGE_COLOR.into_linear();
-    let mut r = renderer(bufs.acc, bufs.cover, bufs.slots3)?;
-    let report = r
-        .render(target, &RGB565, [0; 3], |c| {
-            c.fill(
-                &outline,
-                color,
-                FillRule::NonZero,
-                style.blend,
-                style.opacity,
-            )
-        })
-        .map_err(|_| FrameError)?;
-    black_box(report);
-    Ok(())
 }
 
 /// An embedded-graphics frame of `shape` alone: `clear`, then the shape
@@ -257,7 +249,7 @@ pub fn eg_shape<D: DrawTarget<Color = Rgb565>>(shape: Shape, target: &mut D) {
         Shape::Gauge | Shape::GaugeRound => gauge()
             .into_styled(PrimitiveStyle::with_stroke(GAUGE_COLOR, GAUGE_STROKE))
             .draw(target),
-        Shape::Chart | Shape::ChartRecorded => chart()
+        Shape::Chart | Shape::ChartCached => chart()
             .into_styled(PrimitiveStyle::with_stroke(GAUGE_COLOR, CHART_STROKE))
             .draw(target),
     };
@@ -378,115 +370,6 @@ where
     .map_err(|_| FrameError)?;
     black_box(report);
     Ok(())
-}
-
-/// Segments the recorded scene's curved shapes may have: the gauge's
-/// track ring (703 today), the value arc's ring (522) and the disc (248),
-/// with a margin; 16 bytes a segment, 26 112 bytes in all.
-pub const SCENE_SEGMENTS: [usize; 3] = [768, 576, 288];
-/// Segments in all.
-pub const SCENE_STORE: usize = SCENE_SEGMENTS[0] + SCENE_SEGMENTS[1] + SCENE_SEGMENTS[2];
-
-/// The scene's curved shapes (the gauge's track and value arc, stroked,
-/// and the disc, filled) described once, for every band to fill from.
-pub struct RecordedCurves<'s> {
-    track: SegmentBuffer<'s>,
-    value: SegmentBuffer<'s>,
-    disc: SegmentBuffer<'s>,
-}
-
-/// Segments of the scene's curved shapes, for [`RecordedCurves::record`].
-pub type SceneStore = [Segment; SCENE_STORE];
-
-impl<'s> RecordedCurves<'s> {
-    /// Records the scene's curved shapes into `store`: the segments the
-    /// bands would describe (same geometry, same styles).
-    pub fn record(store: &'s mut SceneStore) -> Result<Self, FrameError> {
-        record_curves(store)
-    }
-}
-
-fn record_curves(store: &mut SceneStore) -> Result<RecordedCurves<'_>, FrameError> {
-    let (track, rest) = store.split_at_mut(SCENE_SEGMENTS[0]);
-    let (value, disc_store) = rest.split_at_mut(SCENE_SEGMENTS[1]);
-    let mut rec = RecordedCurves {
-        track: SegmentBuffer::new(track),
-        value: SegmentBuffer::new(value),
-        disc: SegmentBuffer::new(disc_store),
-    };
-    let stroke = AaStyle::with_stroke(TRACK_COLOR, GAUGE_STROKE).stroke;
-    gauge()
-        .shape()
-        .stroke(&stroke, &mut rec.track)
-        .map_err(|_| FrameError)?;
-    value_arc()
-        .shape()
-        .stroke(&stroke, &mut rec.value)
-        .map_err(|_| FrameError)?;
-    disc().shape().fill(&mut rec.disc);
-    if rec.track.overflowed() || rec.value.overflowed() || rec.disc.overflowed() {
-        return Err(FrameError);
-    }
-    Ok(rec)
-}
-
-/// [`softedge_scene_band`] with the curved shapes filled from `rec`: the
-/// same shapes in the same order, so the same pixels.
-fn recorded_scene_band(
-    c: &mut Canvas<'_, '_, 3, Rgb565>,
-    rec: &RecordedCurves<'_>,
-) -> Result<(), DrawError> {
-    let fill = |c: &mut Canvas<'_, '_, 3, Rgb565>, outline: &SegmentBuffer<'_>, col: Rgb565| {
-        let style = AaStyle::with_fill(col);
-        c.fill(
-            outline,
-            col.into_linear(),
-            FillRule::NonZero,
-            style.blend,
-            style.opacity,
-        )
-    };
-    PANEL.into_styled(AaStyle::with_fill(PANEL_COLOR)).draw(c)?;
-    fill(c, &rec.track, TRACK_COLOR)?;
-    fill(c, &rec.value, GAUGE_COLOR)?;
-    fill(c, &rec.disc, DISC_COLOR)?;
-    for (r, col) in BARS.iter().zip(BAR_COLORS) {
-        r.into_styled(AaStyle::with_fill(col)).draw(c)?;
-    }
-    Ok(())
-}
-
-/// The scene with its curved shapes recorded once per frame (on the
-/// stack, 16 bytes a segment) and filled from the records in every band,
-/// whole or only `window`, into `target`.
-#[inline(never)]
-pub fn softedge_scene_recorded<D>(
-    window: Option<Rectangle>,
-    bufs: &mut Buffers<'_>,
-    target: &mut D,
-) -> Result<(), FrameError>
-where
-    D: DrawTarget<Color = Rgb565> + OriginDimensions,
-{
-    let mut store = [Segment::default(); SCENE_STORE];
-    let rec = RecordedCurves::record(&mut store)?;
-    softedge_scene_from(&rec, window, bufs, target)
-}
-
-/// The scene with its curved shapes filled from `rec`, recorded before
-/// (once at start-up, say: they do not change), whole or only `window`.
-#[inline(never)]
-pub fn softedge_scene_from<D>(
-    rec: &RecordedCurves<'_>,
-    window: Option<Rectangle>,
-    bufs: &mut Buffers<'_>,
-    target: &mut D,
-) -> Result<(), FrameError>
-where
-    D: DrawTarget<Color = Rgb565> + OriginDimensions,
-{
-    let mut r = renderer(&mut *bufs.acc, &mut *bufs.cover, &mut *bufs.slots3)?;
-    render_scene(&mut r, window, target, |c| recorded_scene_band(c, rec))
 }
 
 /// `scene` (one of this module's) into the one-band DMA buffer `bufs.out16`
@@ -684,66 +567,39 @@ mod tests {
     }
 
     #[test]
-    fn the_recorded_chart_is_the_chart_bit_for_bit() {
+    fn the_cached_chart_is_the_chart_bit_for_bit() {
         let mut s = Storage::new();
         let mut frames = [Screen(vec![0; 240 * 240]), Screen(vec![0; 240 * 240])];
-        for (shape, screen) in [Shape::Chart, Shape::ChartRecorded]
+        let mut stats = [(0, 0); 2];
+        for ((shape, screen), st) in [Shape::Chart, Shape::ChartCached]
             .into_iter()
             .zip(&mut frames)
+            .zip(&mut stats)
         {
-            shape_into(shape, s.bufs(), screen).unwrap();
+            *st = shape_into(shape, s.bufs(), screen).unwrap();
         }
         assert!(frames[0].0.iter().filter(|&&p| p != 0).count() > 500);
-        let mut store = [Segment::default(); CHART_SEGMENTS];
-        let mut outline = SegmentBuffer::new(&mut store);
-        chart()
-            .shape()
-            .stroke(&chart_style().stroke, &mut outline)
-            .unwrap();
-        // 228 today: the buffer's 256 leave a margin, and this says when
-        // the stroker's output grows past it.
-        assert!((200..=240).contains(&outline.segments().len()));
         assert!(frames[0].0 == frames[1].0);
-    }
-
-    #[test]
-    fn the_recorded_scene_is_the_scene_bit_for_bit() {
-        let mut s = Storage::new();
-        for window in [None, Some(DIRTY)] {
-            let mut direct = Screen(vec![0x1234; 240 * 240]);
-            softedge_scene(window, &mut s.bufs(), &mut direct).unwrap();
-            let mut recorded = Screen(vec![0x1234; 240 * 240]);
-            softedge_scene_recorded(window, &mut s.bufs(), &mut recorded).unwrap();
-            // The direct scene's circle and arcs are drawn from their exact
-            // areas, the recorded ones from their flattened outlines (as
-            // the direct ones were before): within a code of each other.
-            let channels = |p: u16| [p >> 11, (p >> 5) & 63, p & 31];
-            let mut moved = 0;
-            for (&a, &b) in direct.0.iter().zip(&recorded.0) {
-                for (x, y) in channels(a).into_iter().zip(channels(b)) {
-                    assert!(x.abs_diff(y) <= 1, "window {window:?}: {a:04x} {b:04x}");
-                }
-                moved += usize::from(a != b);
-            }
-            assert!(moved < 500, "window {window:?}: {moved} pixels");
-            std::println!("window {window:?}: {moved} pixels moved by a code");
-            let mut store = [Segment::default(); SCENE_STORE];
-            let rec = RecordedCurves::record(&mut store).unwrap();
-            for _ in 0..2 {
-                // Once recorded, for any number of frames.
-                let mut again = Screen(vec![0x1234; 240 * 240]);
-                softedge_scene_from(&rec, window, &mut s.bufs(), &mut again).unwrap();
-                assert!(recorded.0 == again.0, "window {window:?}");
-            }
+        // Without a cache nothing is kept; with one the stroke is
+        // described in the first of the 15 bands and found in the others.
+        assert_eq!(stats, [(0, 0), (14, 1)]);
+        // The outline and its description take 228 + 31 segments today:
+        // the cache's 288 leave a margin, and this says when the
+        // stroker's output grows past it.
+        let mut segments = vec![Segment::ZERO; 4096];
+        let mut entries = [ShapeEntry::EMPTY; 2];
+        {
+            let r = renderer(&mut s.acc, &mut s.cover, &mut s.slots3).unwrap();
+            let mut r = r.with_shape_cache(&mut segments, &mut entries);
+            let mut screen = Screen(vec![0; 240 * 240]);
+            r.render(&mut screen, &RGB565, [0; 3], |c| {
+                chart().into_styled(chart_style()).draw(c)
+            })
+            .unwrap();
         }
-        let mut store = [Segment::default(); SCENE_STORE];
-        let rec = RecordedCurves::record(&mut store).unwrap();
-        let counts = [&rec.track, &rec.value, &rec.disc].map(|b| b.segments().len());
-        // Each within its store with a margin: this says when the
-        // descriptions grow past it (or shrink, and the stores could).
-        for (n, cap) in counts.into_iter().zip(SCENE_SEGMENTS) {
-            assert!(n <= cap && n * 6 >= cap * 5, "{counts:?}");
-        }
+        let used = softedge::canvas::ShapeCache::new(&mut segments, &mut entries, 0).used();
+        assert_eq!((used.0, used.2), (1, 0));
+        assert!((240..=CHART_SEGMENTS).contains(&used.1), "{used:?}");
     }
 
     #[test]

@@ -45,6 +45,7 @@ pub(crate) mod sector;
 pub use circle::Circle;
 pub use ellipse::Ellipse;
 pub use key::ShapeKey;
+pub(crate) use key::{same_stream, write_stream, Kind as DescribedKind};
 pub use polyline::{Line, Polygon, Polyline};
 pub use rect::{CornerRadii, Rectangle, RoundedRectangle};
 pub use sector::{Arc, Sector};
@@ -121,9 +122,19 @@ pub trait Shape {
     /// [`ShapeCache`](crate::canvas::ShapeCache) keeps its outline:
     /// `None` (the default) for a shape described again wherever it is
     /// drawn. A shape that gives a key must describe the same segments
-    /// whenever its key is the same.
+    /// whenever its key is the same (polylines, polygons and SVG paths,
+    /// whose keys are made from their descriptions, are compared by their
+    /// descriptions too).
     fn key(&self) -> Option<ShapeKey> {
         None
+    }
+
+    /// True when [`key`](Self::key) is made by a pass over the shape's
+    /// points (polylines, polygons, SVG paths): a canvas without a shape
+    /// cache, which only needs the keys of circles and arcs, then does not
+    /// ask for it. False (the default) for a key of a few numbers.
+    fn key_reads_points(&self) -> bool {
+        false
     }
 }
 

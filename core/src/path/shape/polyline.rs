@@ -40,6 +40,14 @@ impl<'a, P: Copy + Into<FinePoint>> Polyline<'a, P> {
 }
 
 impl<P: Copy + Into<FinePoint>> Shape for Polyline<'_, P> {
+    fn key(&self) -> Option<super::ShapeKey> {
+        super::ShapeKey::described(super::DescribedKind::Polyline, self)
+    }
+
+    fn key_reads_points(&self) -> bool {
+        true
+    }
+
     fn describe<S: PathSink + ?Sized>(&self, sink: &mut S) {
         let t = self.translate;
         let mut it = self.vertices.iter().map(|&p| {
@@ -202,6 +210,14 @@ impl<'a, P: Copy + Into<FinePoint>> Polygon<'a, P> {
 }
 
 impl<P: Copy + Into<FinePoint>> Shape for Polygon<'_, P> {
+    fn key(&self) -> Option<super::ShapeKey> {
+        super::ShapeKey::described(super::DescribedKind::Polygon, self)
+    }
+
+    fn key_reads_points(&self) -> bool {
+        true
+    }
+
     fn describe<S: PathSink + ?Sized>(&self, sink: &mut S) {
         if self.vertices.is_empty() {
             return;
