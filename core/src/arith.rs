@@ -148,6 +148,28 @@ pub(crate) fn imul_wide(a: i32, b: i32) -> i64 {
     }
 }
 
+/// `a * b` for any `i64`s (as `i64 * i64`, whose overflow it keeps): one
+/// [`imul_wide`] when both fit in `i32`, as they do for the stroker's unit
+/// normals and offsets in the coordinate range; else the library's.
+#[inline]
+pub(crate) fn mul_i64(a: i64, b: i64) -> i64 {
+    match (i32::try_from(a), i32::try_from(b)) {
+        (Ok(a), Ok(b)) => imul_wide(a, b),
+        _ => a * b,
+    }
+}
+
+/// `a * b` in full, `i64 x i64 -> i128`: one [`imul_wide`] when both fit
+/// in `i32` (a 128-bit product is three or four 64-bit library calls on
+/// the Cortex-M0).
+#[inline]
+pub(crate) fn mul_i128(a: i64, b: i64) -> i128 {
+    match (i32::try_from(a), i32::try_from(b)) {
+        (Ok(a), Ok(b)) => i128::from(imul_wide(a, b)),
+        _ => i128::from(a) * i128::from(b),
+    }
+}
+
 /// `ceil(n / d)` for `d > 0`; 0 if `d == 0`.
 #[inline]
 pub(crate) fn div_ceil(n: i64, d: i64) -> i64 {
@@ -161,10 +183,166 @@ pub(crate) fn limit(v: i64, lo: i64, hi: i64) -> i64 {
     v.min(hi).max(lo)
 }
 
+/// `floor(sqrt(n))` for any `u64`: [`isqrt64`] below `2^50` (lengths in
+/// the coordinate range), the library's bit-by-bit root above.
+#[inline]
+pub(crate) fn isqrt_u64(n: u64) -> u64 {
+    if n < 1 << 50 {
+        u64::from(isqrt64(n))
+    } else {
+        n.isqrt()
+    }
+}
+
+/// `floor(sqrt(n))` for `n < 2^50`: the root of its top 32 bits (an even
+/// shift) by [`isqrt32`], then the remaining bits two at a time, the
+/// remainder in `u32` (below `2 sqrt(n) + 1 < 2^26`).
+#[inline]
+pub(crate) fn isqrt64(n: u64) -> u32 {
+    let hi = (n >> 32) as u32;
+    if hi == 0 {
+        return isqrt32(n as u32);
+    }
+    // Pairs below the top 32 bits: hi >> 2k == 0, k <= 9.
+    let mut k = 1u32;
+    while k < 15 && (hi >> (2 * k)) != 0 {
+        k += 1;
+    }
+    // In 32-bit words (a variable 64-bit shift is a call on an M0).
+    let lo = n as u32;
+    let top = (hi << (32 - 2 * k)) | (lo >> (2 * k));
+    let mut root = isqrt32(top);
+    let mut rem = top - root * root;
+    while k > 0 {
+        k -= 1;
+        rem = (rem << 2) | ((lo >> (2 * k)) & 3);
+        let t = (root << 2) | 1;
+        root <<= 1;
+        if rem >= t {
+            rem -= t;
+            root |= 1;
+        }
+    }
+    root
+}
+
+/// `floor(sqrt(n))`: `n` shifted left by an even amount into `[2^30,
+/// 2^32)`, its root estimated from [`ROOTS`] by linear interpolation
+/// (within two units of the root of the shifted value), shifted back and
+/// corrected to the floor by comparing squares (`u32` products: the root
+/// is below `2^16`). The bit-by-bit root costs about four times as many
+/// Cortex-M0 instructions.
+#[inline]
+pub(crate) fn isqrt32(n: u32) -> u32 {
+    if n == 0 {
+        return 0;
+    }
+    let (mut m, mut s) = (n, 0u32);
+    if m < 1 << 16 {
+        m <<= 16;
+        s += 8;
+    }
+    if m < 1 << 24 {
+        m <<= 8;
+        s += 4;
+    }
+    if m < 1 << 28 {
+        m <<= 4;
+        s += 2;
+    }
+    if m < 1 << 30 {
+        m <<= 2;
+        s += 1;
+    }
+    // m in [2^30, 2^32): entries 32..128 of the table, 2^25 apart.
+    let i = (m >> 25) as usize;
+    let f = (m >> 13) & 0xfff;
+    let a = ROOTS.get(i).copied().unwrap_or(0);
+    let b = ROOTS.get(i + 1).copied().unwrap_or(a);
+    // sqrt(m) in 1/256, then the root of n (s halvings).
+    let est = (a + (((b - a) * f) >> 12)) >> 8;
+    let mut r = (est >> s).min(u32::from(u16::MAX));
+    while r * r > n {
+        r -= 1;
+    }
+    while r < u32::from(u16::MAX) && (r + 1) * (r + 1) <= n {
+        r += 1;
+    }
+    r
+}
+
+/// `sqrt(i * 2^25) * 256`, rounded down, `i = 0..=128` (entries below 32
+/// are not used): [`isqrt32`]'s estimate, made at compile time.
+static ROOTS: [u32; 129] = {
+    let mut t = [0u32; 129];
+    let mut i = 0;
+    while i < 129 {
+        // sqrt(i * 2^25 * 2^16) = sqrt(i * 2^41), by bits (u64, exact).
+        let n = (i as u64) << 41;
+        let (mut op, mut res, mut one) = (n, 0u64, 1u64 << 62);
+        while one > op {
+            one >>= 2;
+        }
+        while one != 0 {
+            if op >= res + one {
+                op -= res + one;
+                res = (res >> 1) + one;
+            } else {
+                res >>= 1;
+            }
+            one >>= 2;
+        }
+        t[i] = res as u32;
+        i += 1;
+    }
+    t
+};
+
 #[cfg(test)]
 mod tests {
     extern crate std;
     use super::*;
+
+    /// Both paths of the wide products against `i128` arithmetic.
+    #[test]
+    fn products_are_those_of_i128_on_both_paths() {
+        let edges = [
+            0i64,
+            1,
+            2,
+            0xffff,
+            0x1_0000,
+            (1 << 30) + 1,
+            i64::from(i32::MAX),
+            1 << 31,
+            (1 << 31) + 1,
+            1 << 40,
+            i64::MAX,
+        ];
+        let mut rng = crate::path::testing::Lcg(0x3a17_0f1d_e0c4_11aa);
+        let mut cases = std::vec::Vec::new();
+        for &a in &edges {
+            for &b in &edges {
+                for (sa, sb) in [(1, 1), (-1, 1), (1, -1), (-1, -1)] {
+                    cases.push((sa * a, sb * b));
+                }
+            }
+        }
+        cases.push((i64::MIN, 1));
+        cases.push((i64::from(i32::MIN), i64::from(i32::MIN)));
+        for _ in 0..100_000 {
+            let a = (rng.below(u64::MAX) as i64) >> rng.below(63);
+            let b = (rng.below(u64::MAX) as i64) >> rng.below(63);
+            cases.push((a, b));
+        }
+        for (a, b) in cases {
+            let full = i128::from(a) * i128::from(b);
+            assert_eq!(mul_i128(a, b), full, "{a} * {b}");
+            if let Ok(p) = i64::try_from(full) {
+                assert_eq!(mul_i64(a, b), p, "{a} * {b}");
+            }
+        }
+    }
 
     #[test]
     fn divmod_agrees_with_euclid_on_both_paths() {
@@ -319,5 +497,72 @@ mod tests {
         assert_eq!((div_floor(5, 0), rem_floor(5, 0)), (0, 0));
         assert_eq!(div_floor(i64::MIN, -1), 0);
         assert_eq!(limit(5, 7, 3), 7);
+    }
+
+    #[test]
+    fn wide_square_roots_are_floors_on_both_paths() {
+        let mut rng = crate::path::testing::Lcg(0x0c0d_5e1f_2a9b_77e1);
+        let check = |n: u64| {
+            let s = isqrt_u64(n);
+            let (sq, next) = (
+                u128::from(s) * u128::from(s),
+                u128::from(s + 1) * u128::from(s + 1),
+            );
+            assert!(sq <= u128::from(n) && next > u128::from(n), "{n}: {s}");
+        };
+        for n in [
+            0,
+            1,
+            2,
+            3,
+            4,
+            (1 << 50) - 1,
+            1 << 50,
+            (1 << 50) + 1,
+            u64::MAX,
+        ] {
+            check(n);
+        }
+        for _ in 0..100_000 {
+            let n = rng.below(u64::MAX) >> rng.below(64);
+            check(n);
+            let r = n >> 32;
+            check(r * r);
+            check((r * r).saturating_sub(1));
+        }
+    }
+
+    #[test]
+    fn square_roots_are_floors() {
+        let mut rng = crate::path::testing::Lcg(0x51_7a7e);
+        for k in 0..20_000u64 {
+            let n = if k < 2000 {
+                k
+            } else {
+                rng.below(1 << 50) >> rng.below(50)
+            };
+            let s = u64::from(isqrt64(n));
+            assert!(s * s <= n && (s + 1) * (s + 1) > n, "{n}: {s}");
+            if n < 1 << 32 {
+                assert_eq!(isqrt32(n as u32), s as u32);
+            }
+        }
+        let top = (1u64 << 50) - 1;
+        let s = u64::from(isqrt64(top));
+        assert!(s * s <= top && (s + 1) * (s + 1) > top);
+    }
+
+    #[test]
+    fn square_roots_are_floors_at_every_square() {
+        for k in 0..=u32::from(u16::MAX) {
+            let sq = k * k;
+            assert_eq!(isqrt32(sq), k, "{sq}");
+            if sq > 0 {
+                assert_eq!(isqrt32(sq - 1), k - 1, "{}", sq - 1);
+            }
+            // The largest n with floor(sqrt(n)) = k: k^2 + 2k.
+            assert_eq!(isqrt32(sq.saturating_add(2 * k)), k, "{}", sq + 2 * k);
+        }
+        assert_eq!(isqrt32(u32::MAX), 65535);
     }
 }

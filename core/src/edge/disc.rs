@@ -38,6 +38,7 @@
 //! remainders in `u32`; the segment's products in `u64`.
 
 use super::DeltaSink;
+use crate::arith::{isqrt32, isqrt64};
 use crate::COVER_BITS;
 
 /// Quarter fine units per pixel (1/4096 px).
@@ -74,110 +75,6 @@ fn pixel_chord(m: u32) -> u32 {
     let b = CHORD_TABLE.get(j + 1).copied().unwrap_or(a);
     (a + (((b - a) * f) >> 6) + 8) >> 4
 }
-
-/// `floor(sqrt(n))` for `n < 2^50`: the root of its top 32 bits (an even
-/// shift) by [`isqrt32`], then the remaining bits two at a time, the
-/// remainder in `u32` (below `2 sqrt(n) + 1 < 2^26`).
-#[inline]
-pub(crate) fn isqrt64(n: u64) -> u32 {
-    let hi = (n >> 32) as u32;
-    if hi == 0 {
-        return isqrt32(n as u32);
-    }
-    // Pairs below the top 32 bits: hi >> 2k == 0, k <= 9.
-    let mut k = 1u32;
-    while k < 15 && (hi >> (2 * k)) != 0 {
-        k += 1;
-    }
-    // In 32-bit words (a variable 64-bit shift is a call on an M0).
-    let lo = n as u32;
-    let top = (hi << (32 - 2 * k)) | (lo >> (2 * k));
-    let mut root = isqrt32(top);
-    let mut rem = top - root * root;
-    while k > 0 {
-        k -= 1;
-        rem = (rem << 2) | ((lo >> (2 * k)) & 3);
-        let t = (root << 2) | 1;
-        root <<= 1;
-        if rem >= t {
-            rem -= t;
-            root |= 1;
-        }
-    }
-    root
-}
-
-/// `floor(sqrt(n))`: `n` shifted left by an even amount into `[2^30,
-/// 2^32)`, its root estimated from [`ROOTS`] by linear interpolation
-/// (within two units of the root of the shifted value), shifted back and
-/// corrected to the floor by comparing squares (`u32` products: the root
-/// is below `2^16`). The bit-by-bit root costs about four times as many
-/// Cortex-M0 instructions.
-#[inline]
-pub(crate) fn isqrt32(n: u32) -> u32 {
-    if n == 0 {
-        return 0;
-    }
-    let (mut m, mut s) = (n, 0u32);
-    if m < 1 << 16 {
-        m <<= 16;
-        s += 8;
-    }
-    if m < 1 << 24 {
-        m <<= 8;
-        s += 4;
-    }
-    if m < 1 << 28 {
-        m <<= 4;
-        s += 2;
-    }
-    if m < 1 << 30 {
-        m <<= 2;
-        s += 1;
-    }
-    // m in [2^30, 2^32): entries 32..128 of the table, 2^25 apart.
-    let i = (m >> 25) as usize;
-    let f = (m >> 13) & 0xfff;
-    let a = ROOTS.get(i).copied().unwrap_or(0);
-    let b = ROOTS.get(i + 1).copied().unwrap_or(a);
-    // sqrt(m) in 1/256, then the root of n (s halvings).
-    let est = (a + (((b - a) * f) >> 12)) >> 8;
-    let mut r = (est >> s).min(u32::from(u16::MAX));
-    while r * r > n {
-        r -= 1;
-    }
-    while r < u32::from(u16::MAX) && (r + 1) * (r + 1) <= n {
-        r += 1;
-    }
-    r
-}
-
-/// `sqrt(i * 2^25) * 256`, rounded down, `i = 0..=128` (entries below 32
-/// are not used): [`isqrt32`]'s estimate, made at compile time.
-static ROOTS: [u32; 129] = {
-    let mut t = [0u32; 129];
-    let mut i = 0;
-    while i < 129 {
-        // sqrt(i * 2^25 * 2^16) = sqrt(i * 2^41), by bits (u64, exact).
-        let n = (i as u64) << 41;
-        let (mut op, mut res, mut one) = (n, 0u64, 1u64 << 62);
-        while one > op {
-            one >>= 2;
-        }
-        while one != 0 {
-            if op >= res + one {
-                op -= res + one;
-                res = (res >> 1) + one;
-            } else {
-                res >>= 1;
-            }
-            one >>= 2;
-        }
-        t[i] = res as u32;
-        i += 1;
-    }
-    t
-};
 
 /// Bits of `d` (`0` for `0`).
 fn bit_len(d: u64) -> u32 {
@@ -786,26 +683,6 @@ mod tests {
         }
     }
 
-    #[test]
-    fn square_roots_are_floors() {
-        let mut rng = Lcg(0x51_7a7e);
-        for k in 0..20_000u64 {
-            let n = if k < 2000 {
-                k
-            } else {
-                rng.below(1 << 50) >> rng.below(50)
-            };
-            let s = u64::from(isqrt64(n));
-            assert!(s * s <= n && (s + 1) * (s + 1) > n, "{n}: {s}");
-            if n < 1 << 32 {
-                assert_eq!(isqrt32(n as u32), s as u32);
-            }
-        }
-        let top = (1u64 << 50) - 1;
-        let s = u64::from(isqrt64(top));
-        assert!(s * s <= top && (s + 1) * (s + 1) > top);
-    }
-
     /// An arc's parts walked into windows that cut the circle anywhere
     /// (beside it too): the same changes whether the window says which
     /// columns it keeps or not, in any band height.
@@ -854,20 +731,6 @@ mod tests {
 
     /// Every square and its neighbours: `floor(sqrt)` changes exactly
     /// there (the reference is the integer definition itself).
-    #[test]
-    fn square_roots_are_floors_at_every_square() {
-        for k in 0..=u32::from(u16::MAX) {
-            let sq = k * k;
-            assert_eq!(isqrt32(sq), k, "{sq}");
-            if sq > 0 {
-                assert_eq!(isqrt32(sq - 1), k - 1, "{}", sq - 1);
-            }
-            // The largest n with floor(sqrt(n)) = k: k^2 + 2k.
-            assert_eq!(isqrt32(sq.saturating_add(2 * k)), k, "{}", sq + 2 * k);
-        }
-        assert_eq!(isqrt32(u32::MAX), 65535);
-    }
-
     /// Every pixel of windows over the circle's edge within 1/4096 px of
     /// the exact area, at random sub-pixel centres and radii from 1/128 px
     /// to 500 px (windows cut the circle: what lies left of a window

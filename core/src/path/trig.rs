@@ -136,10 +136,26 @@ pub(crate) fn round_shift(x: i64, s: u32) -> i64 {
 }
 
 /// `n / d` rounded to nearest, halves away from zero; 0 if `d == 0`.
+///
+/// In 64 bits when both fit below `2^62` (every stroke join's corner in
+/// the coordinate range: the Cortex-M0 divides 64 bits in a library call,
+/// 128 bits in several), else in 128; the same quotient either way.
 #[inline]
 pub(crate) fn div_round(n: i128, d: i128) -> i128 {
+    const SMALL: i128 = 1 << 62;
     if d == 0 {
         return 0;
+    }
+    if -SMALL < n && n < SMALL && -SMALL < d && d < SMALL {
+        let (n, d) = (n as i64, d as i64);
+        let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
+        // |n| + d / 2 < 2^63: no overflow.
+        let q = if n >= 0 {
+            (n + d / 2) / d
+        } else {
+            -((d / 2 - n) / d)
+        };
+        return i128::from(q);
     }
     let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
     if n >= 0 {
@@ -344,6 +360,62 @@ pub(crate) fn ceil_sqrt_u64(v: u64) -> u64 {
 
 #[cfg(test)]
 mod tests {
+
+    extern crate std;
+
+    /// The quotient rounded half away from zero, from the floor and the
+    /// remainder of Euclid's division (exact, in `i128`), not from the
+    /// code under test.
+    fn reference(n: i128, d: i128) -> i128 {
+        if d == 0 {
+            return 0;
+        }
+        let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
+        let (q, r) = (n.div_euclid(d), n.rem_euclid(d));
+        // n / d = q + r / d, 0 <= r < d; a half goes up when q + r/d >= 0.
+        let up = 2 * r > d || (2 * r == d && q >= 0);
+        q + i128::from(up)
+    }
+
+    #[test]
+    fn division_rounds_halves_away_from_zero_on_both_paths() {
+        use super::div_round;
+        use crate::path::testing::Lcg;
+        let edges = [
+            0i128,
+            1,
+            2,
+            3,
+            7,
+            (1 << 31) - 1,
+            1 << 31,
+            (1 << 61) + 12345,
+            (1 << 62) - 1,
+            1 << 62,
+            (1 << 62) + 1,
+            1 << 80,
+            (1 << 100) + 3,
+        ];
+        let mut cases = std::vec::Vec::new();
+        for &a in &edges {
+            for &b in &edges {
+                for (sa, sb) in [(1, 1), (-1, 1), (1, -1), (-1, -1)] {
+                    cases.push((sa * a, sb * b));
+                }
+            }
+        }
+        let mut rng = Lcg(0xd1f0_4071_0a11_5eed);
+        for _ in 0..100_000 {
+            let n = (rng.below(1 << 63) as i128 - (1 << 62)) >> rng.below(60);
+            let d = (rng.below(1 << 63) as i128 - (1 << 62)) >> rng.below(62);
+            cases.push((n, d));
+            // Exact halves.
+            cases.push((d * (n >> 20) + d / 2, d));
+        }
+        for (n, d) in cases {
+            assert_eq!(div_round(n, d), reference(n, d), "{n} / {d}");
+        }
+    }
 
     #[test]
     fn the_coarse_sine_is_within_its_bound() {

@@ -17,6 +17,7 @@
 use crate::geom::FinePoint;
 
 use super::trig::{round_shift, Q30};
+use crate::arith::{isqrt_u64, mul_i128, mul_i64, mul_wide};
 
 /// A point or vector in fine units (1/1024 px), in `i64`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -41,11 +42,11 @@ impl Pt {
     /// `self x o = x1 y2 - y1 x2`; positive when `o` turns clockwise on
     /// screen (y down) from `self`.
     pub fn cross(self, o: Pt) -> i128 {
-        i128::from(self.x) * i128::from(o.y) - i128::from(self.y) * i128::from(o.x)
+        mul_i128(self.x, o.y) - mul_i128(self.y, o.x)
     }
 
     pub fn dot(self, o: Pt) -> i128 {
-        i128::from(self.x) * i128::from(o.x) + i128::from(self.y) * i128::from(o.y)
+        mul_i128(self.x, o.x) + mul_i128(self.y, o.y)
     }
 
     pub fn is_zero(self) -> bool {
@@ -57,7 +58,7 @@ impl Pt {
     pub fn len(self) -> i64 {
         let (x, y) = (self.x.unsigned_abs(), self.y.unsigned_abs());
         if x < 1 << 31 && y < 1 << 31 {
-            (x * x + y * y).isqrt() as i64
+            isqrt_u64(mul_wide(x as u32, x as u32) + mul_wide(y as u32, y as u32)) as i64
         } else {
             // Scale down by 2^k, root, scale back: off by at most 2^k.
             let mut k = 0;
@@ -87,7 +88,9 @@ impl Pt {
             x <<= 1;
             y <<= 1;
         }
-        let len = ((x * x + y * y) as u64).isqrt() as i64;
+        // |x|, |y| < 2^31: the squares as u32 x u32 products.
+        let (ax, ay) = (x.unsigned_abs() as u32, y.unsigned_abs() as u32);
+        let len = isqrt_u64(mul_wide(ax, ax) + mul_wide(ay, ay)) as i64;
         if len == 0 {
             return None;
         }
@@ -107,8 +110,8 @@ impl Pt {
     /// `s = 30` offsets by `h` fine units and `s = 31` by `h / 2`).
     pub fn offset(self, u: Unit, h: i64, s: u32) -> Pt {
         Pt::new(
-            self.x + round_shift(u.x * h, s),
-            self.y + round_shift(u.y * h, s),
+            self.x + round_shift(mul_i64(u.x, h), s),
+            self.y + round_shift(mul_i64(u.y, h), s),
         )
     }
 }
@@ -161,12 +164,12 @@ impl Unit {
 
     /// `self . o` in Q30.
     pub fn dot(self, o: Unit) -> i64 {
-        (self.x * o.x + self.y * o.y) >> 30
+        (mul_i64(self.x, o.x) + mul_i64(self.y, o.y)) >> 30
     }
 
     /// `self x o` in Q30: `sin` of the clockwise turn from `self` to `o`.
     pub fn cross(self, o: Unit) -> i64 {
-        (self.x * o.y - self.y * o.x) >> 30
+        (mul_i64(self.x, o.y) - mul_i64(self.y, o.x)) >> 30
     }
 }
 

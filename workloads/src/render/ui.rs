@@ -184,7 +184,11 @@ where
     if shape == Shape::ChartCached {
         return chart_cached(bufs, target);
     }
-    shape_frame(shape, renderer(bufs.acc, bufs.cover, bufs.slots3)?, target)
+    shape_frame(
+        shape,
+        &mut renderer(bufs.acc, bufs.cover, bufs.slots3)?,
+        target,
+    )
 }
 
 /// The chart through a renderer with a shape cache on the stack (as a
@@ -197,17 +201,14 @@ where
     let mut segments = [Segment::ZERO; CHART_SEGMENTS];
     let mut entries = [ShapeEntry::EMPTY; 2];
     let r = renderer(bufs.acc, bufs.cover, bufs.slots3)?;
-    shape_frame(
-        Shape::Chart,
-        r.with_shape_cache(&mut segments, &mut entries),
-        target,
-    )
+    let mut r = r.with_shape_cache(&mut segments, &mut entries);
+    shape_frame(Shape::Chart, &mut r, target)
 }
 
 /// One frame of `shape` by `r`; the shape cache's (kept, described).
 fn shape_frame<D>(
     shape: Shape,
-    mut r: FrameRenderer<'_, 3>,
+    r: &mut FrameRenderer<'_, 3>,
     target: &mut D,
 ) -> Result<(u32, u32), FrameError>
 where

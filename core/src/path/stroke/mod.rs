@@ -183,10 +183,24 @@ impl MiterLimit {
 
     /// True when a miter is drawn where the unit normals before and after
     /// the vertex have the dot product `dot` (Q30): `L^2 (1 + dot) >= 2`.
+    ///
+    /// In 32x32-bit products (a `u128` product is several library calls on
+    /// the Cortex-M0): `L^2 = h 2^32 + l`, and `L^2 (1 + dot) = h (1 + dot)
+    /// 2^32 + l (1 + dot)` is at least `2^63` when `h (1 + dot) >= 2^31`;
+    /// else the sum is taken in `u64`, saturating (a sum past `2^64` is
+    /// past `2^63` too).
     pub(crate) fn allows(self, dot_q30: i64) -> bool {
-        let l2 = u128::from(self.0) * u128::from(self.0); // Q32
-        let one_plus = (dot_q30 + (1 << 30)).max(0) as u128; // Q30
-        l2 * one_plus >= 2u128 << 62
+        use crate::arith::mul_wide;
+        let l2 = mul_wide(self.0, self.0); // Q32
+                                           // The dot product of unit vectors is at most 2^30 and a little:
+                                           // 1 + dot fits in u32 (capped beyond, where every limit allows).
+        let one_plus = (dot_q30 + (1 << 30)).clamp(0, i64::from(u32::MAX)) as u32; // Q30
+        let (h, l) = ((l2 >> 32) as u32, l2 as u32);
+        let high = mul_wide(h, one_plus);
+        if high >= 1 << 31 {
+            return true;
+        }
+        (high << 32).saturating_add(mul_wide(l, one_plus)) >= 1 << 63
     }
 
     /// The limit in Q16.
@@ -633,6 +647,53 @@ impl<S: SegmentSink + ?Sized> PathSink for Stroker<'_, '_, S> {
 mod tests {
     use super::*;
     use crate::path::testing::Tally;
+
+    /// The miter test in 32-bit products against the formula in `u128`.
+    #[test]
+    fn the_miter_limit_test_is_the_formula_in_full() {
+        extern crate std;
+        let mut rng = crate::path::testing::Lcg(0x31e7_e411_0c0f_5eed);
+        let formula = |l: u32, dot: i64| {
+            let l2 = u128::from(l) * u128::from(l);
+            let one_plus = (dot + (1 << 30)).max(0) as u128;
+            l2 * one_plus >= 2u128 << 62
+        };
+        let limits = [0, 1, 1 << 16, 92_681, 92_682, 4 << 16, 10 << 16, u32::MAX];
+        let dots = [
+            -(1i64 << 30) - 3,
+            -(1 << 30),
+            0,
+            1 << 29,
+            (1 << 30) - 1,
+            1 << 30,
+            (1 << 30) + 2,
+        ];
+        let mut cases = std::vec::Vec::new();
+        for &l in &limits {
+            for &d in &dots {
+                cases.push((l, d));
+            }
+        }
+        for _ in 0..200_000 {
+            let l = (rng.below(1 << 32) as u32) >> rng.below(32);
+            let d = rng.below(1 << 31) as i64 - (1 << 30) + rng.below(3) as i64;
+            cases.push((l, d));
+            // At the threshold: the smallest dot the limit allows, and
+            // one below it.
+            let l2 = u128::from(l) * u128::from(l);
+            if l2 > 0 {
+                let t = ((1u128 << 63).div_ceil(l2)).min(1 << 40) as i64 - (1 << 30);
+                cases.push((l, t));
+                cases.push((l, t - 1));
+            }
+        }
+        for (l, d) in cases {
+            if d + (1 << 30) > i64::from(u32::MAX) {
+                continue;
+            }
+            assert_eq!(MiterLimit(l).allows(d), formula(l, d), "{l} {d}");
+        }
+    }
 
     fn p(x: i32, y: i32) -> FinePoint {
         FinePoint::new(x * 1024, y * 1024)

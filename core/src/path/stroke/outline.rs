@@ -51,6 +51,7 @@
 //! Everything else is emitted at once, so the outline needs two pieces of
 //! memory.
 
+use crate::arith::mul_i128;
 use crate::path::arc::{arc_count, arc_inner_vertices, ellipse_points, EllipseFrame};
 use crate::path::segment::{emit, numbers, Contour, SegmentSink, Vertices};
 use crate::path::trig::{atan2, div_round, Q30, TURN};
@@ -570,8 +571,8 @@ pub(super) fn is_right_turn(na: Unit, nb: Unit) -> bool {
 pub(super) fn miter_tip(v: Pt, ua: Unit, ub: Unit, h_q1: i64) -> Pt {
     let den = 2 * i128::from(Q30 + ua.dot(ub));
     Pt::new(
-        v.x + div_round(i128::from(ua.x + ub.x) * i128::from(h_q1), den) as i64,
-        v.y + div_round(i128::from(ua.y + ub.y) * i128::from(h_q1), den) as i64,
+        v.x + div_round(mul_i128(ua.x + ub.x, h_q1), den) as i64,
+        v.y + div_round(mul_i128(ua.y + ub.y, h_q1), den) as i64,
     )
 }
 
@@ -588,10 +589,10 @@ pub(super) fn inner_corner(v: Pt, na: Unit, nb: Unit, h_q1: i64, side: i64) -> O
         return None;
     }
     let den = 2 * i128::from(one_plus);
-    let k = i128::from(side * h_q1);
+    let k = side * h_q1;
     Some(Pt::new(
-        v.x + div_round(i128::from(na.x + nb.x) * k, den) as i64,
-        v.y + div_round(i128::from(na.y + nb.y) * k, den) as i64,
+        v.x + div_round(mul_i128(na.x + nb.x, k), den) as i64,
+        v.y + div_round(mul_i128(na.y + nb.y, k), den) as i64,
     ))
 }
 
@@ -614,6 +615,10 @@ pub(super) fn cut_inner(a0: Pt, a1: &mut Pt, b0: &mut Pt, b1: Pt, i: Option<Pt>)
             return i == p0;
         }
         let t = i.sub(p0).dot(d); // t / l2 is the parameter
+        if 0 <= t && t <= l2 {
+            // On the edge itself: within the slack whatever the length.
+            return true;
+        }
         let len = i128::from(d.len().max(1));
         t * len >= -SLACK * l2 && t * len <= l2 * (len + SLACK)
     };
