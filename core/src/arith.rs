@@ -105,9 +105,20 @@ pub(crate) fn div_by_inverse(n: u32, d: u32, inv: u32) -> u32 {
 
 /// `a * b` in full, `u32 x u32 -> u64`, from four 16-bit products: the
 /// Cortex-M0's multiply keeps the low 32 bits only, and a 64-bit product is
-/// a library call several times longer.
+/// a library call several times longer. (On a 64-bit host, the one
+/// multiply it has: the same product.)
 #[inline]
 pub(crate) fn mul_wide(a: u32, b: u32) -> u64 {
+    if cfg!(target_pointer_width = "64") {
+        return u64::from(a) * u64::from(b);
+    }
+    mul_wide_halves(a, b)
+}
+
+/// [`mul_wide`] from 16-bit halves (what 32-bit targets run; tested on
+/// every host).
+#[inline]
+fn mul_wide_halves(a: u32, b: u32) -> u64 {
     let (a0, a1) = (a & 0xffff, a >> 16);
     let (b0, b1) = (b & 0xffff, b >> 16);
     // Each partial product is below 2^32; the middle sum below 2^33.
@@ -148,24 +159,54 @@ pub(crate) fn imul_wide(a: i32, b: i32) -> i64 {
     }
 }
 
-/// `a * b` for any `i64`s (as `i64 * i64`, whose overflow it keeps): one
-/// [`imul_wide`] when both fit in `i32`, as they do for the stroker's unit
-/// normals and offsets in the coordinate range; else the library's.
+/// `a * b` for any `i64`s (as `i64 * i64`, whose overflow it keeps): on a
+/// 32-bit target one [`imul_wide`] when both fit in `i32`, as they do for
+/// the stroker's unit normals and offsets in the coordinate range; else
+/// (and on a 64-bit host) the plain product.
 #[inline]
 pub(crate) fn mul_i64(a: i64, b: i64) -> i64 {
+    if cfg!(target_pointer_width = "64") {
+        return a * b;
+    }
+    mul_i64_halves(a, b)
+}
+
+/// [`mul_i64`] as 32-bit targets take it (tested on every host).
+#[inline]
+fn mul_i64_halves(a: i64, b: i64) -> i64 {
     match (i32::try_from(a), i32::try_from(b)) {
-        (Ok(a), Ok(b)) => imul_wide(a, b),
+        (Ok(a), Ok(b)) => imul_wide_halves(a, b),
         _ => a * b,
     }
 }
 
-/// `a * b` in full, `i64 x i64 -> i128`: one [`imul_wide`] when both fit
-/// in `i32` (a 128-bit product is three or four 64-bit library calls on
-/// the Cortex-M0).
+/// [`imul_wide`] from [`mul_wide_halves`].
+#[inline]
+fn imul_wide_halves(a: i32, b: i32) -> i64 {
+    let p = mul_wide_halves(a.unsigned_abs(), b.unsigned_abs()) as i64;
+    if (a < 0) != (b < 0) {
+        -p
+    } else {
+        p
+    }
+}
+
+/// `a * b` in full, `i64 x i64 -> i128`: on a 32-bit target one
+/// [`imul_wide`] when both fit in `i32` (a 128-bit product is three or
+/// four 64-bit library calls on the Cortex-M0); else the plain product.
 #[inline]
 pub(crate) fn mul_i128(a: i64, b: i64) -> i128 {
+    if cfg!(target_pointer_width = "64") {
+        return i128::from(a) * i128::from(b);
+    }
+    mul_i128_halves(a, b)
+}
+
+/// [`mul_i128`] as 32-bit targets take it (tested on every host).
+#[inline]
+fn mul_i128_halves(a: i64, b: i64) -> i128 {
     match (i32::try_from(a), i32::try_from(b)) {
-        (Ok(a), Ok(b)) => i128::from(imul_wide(a, b)),
+        (Ok(a), Ok(b)) => i128::from(imul_wide_halves(a, b)),
         _ => i128::from(a) * i128::from(b),
     }
 }
@@ -338,9 +379,14 @@ mod tests {
         for (a, b) in cases {
             let full = i128::from(a) * i128::from(b);
             assert_eq!(mul_i128(a, b), full, "{a} * {b}");
+            assert_eq!(mul_i128_halves(a, b), full, "{a} * {b}");
             if let Ok(p) = i64::try_from(full) {
                 assert_eq!(mul_i64(a, b), p, "{a} * {b}");
+                assert_eq!(mul_i64_halves(a, b), p, "{a} * {b}");
             }
+            let (ua, ub) = (a as u32, b as u32);
+            assert_eq!(mul_wide_halves(ua, ub), u64::from(ua) * u64::from(ub));
+            assert_eq!(mul_wide(ua, ub), u64::from(ua) * u64::from(ub));
         }
     }
 
