@@ -632,6 +632,9 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         let Some(rows) = self.band_rows(out.rows()) else {
             return Some(Ok(()));
         };
+        if ring_misses(c, outer, inner, &rows, &self.buf.band().column_range()) {
+            return Some(Ok(()));
+        }
         let mut d = self.buf.deltas(rows.clone());
         out.walk(rows.clone(), 1, &mut d);
         if let Some(h) = hole {
@@ -698,6 +701,21 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         }
         let c = arc.centre;
         let b = circle_box(c, u32::try_from(outer).ok()?)?;
+        let out_edge = CircleEdge::new(c.x * 4, c.y * 4, u32::try_from(outer).ok()?)?;
+        // A band whose pixels the ring misses gets nothing from the arc
+        // (its caps lie in the ring too): numbered, not set up. (Where the
+        // caps' test below sends the arc to its outline, that draws
+        // nothing here either, under the same number.)
+        let rows = self.band_rows(out_edge.rows()).filter(|rows| {
+            let (o, i) = (u64::try_from(outer).ok(), u64::try_from(inner).ok());
+            let cols = self.buf.band().column_range();
+            self.touches(&b)
+                && !matches!((o, i), (Some(o), Some(i)) if ring_misses(c, o, i, rows, &cols))
+        });
+        let Some(rows) = rows else {
+            self.next_serial();
+            return Some(Ok(()));
+        };
         // The ends, as `Arc::stroke_with` finds them (fine units).
         let c_q8 = Pt::new(i64::from(c.x) << 8, i64::from(c.y) << 8);
         let r_q8 = i64::from(arc.radius) << 8;
@@ -711,7 +729,6 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
         } else {
             (c, c)
         };
-        let out_edge = CircleEdge::new(c.x * 4, c.y * 4, u32::try_from(outer).ok()?)?;
         let out_spans = out_edge.arc_spans(t0, s, q4(oa), q4(ob));
         let hole = if inner > 0 {
             let e = CircleEdge::new(c.x * 4, c.y * 4, u32::try_from(inner).ok()?)?;
@@ -744,12 +761,6 @@ impl<'c, 'b, const C: usize, Col> Canvas<'c, 'b, C, Col> {
             None
         };
         let serial = self.next_serial();
-        if !self.touches(&b) {
-            return Some(Ok(()));
-        }
-        let Some(rows) = self.band_rows(out_edge.rows()) else {
-            return Some(Ok(()));
-        };
         let shape = ShapeBand {
             serial,
             mode: AreaMode::Exact,
@@ -1470,6 +1481,41 @@ fn sampled_edge<const C: usize>(
 /// outline's (`paths::shape_bounds`, widened by the curves' margin), when
 /// all of it is in range; `None` otherwise (the outline path then reports
 /// the shape). Saturating: a centre near the `i32` ends is out of range.
+/// True when the ring of radii `inner <= outer` (quarter fine units; a
+/// disc for `inner` 0) about `c` has no area in the pixels of `rows` x
+/// `cols`: the pixels lie wholly inside the hole (their farthest corner
+/// at most `inner` from `c`) or wholly outside (their nearest point at
+/// least `outer` away). Distances below `2^30` quarter units (band
+/// columns and rows are below `2^16` px, a centre in range below `2^23`
+/// units from the origin), their squares as `u32 x u32` products.
+pub(crate) fn ring_misses(
+    c: FinePoint,
+    outer: u64,
+    inner: u64,
+    rows: &Range<i32>,
+    cols: &Range<i32>,
+) -> bool {
+    const Q: i64 = 4 << FINE_BITS;
+    let (cx, cy) = (i64::from(c.x) * 4, i64::from(c.y) * 4);
+    let (x0, x1) = (i64::from(cols.start) * Q, i64::from(cols.end) * Q);
+    let (y0, y1) = (i64::from(rows.start) * Q, i64::from(rows.end) * Q);
+    if x0 >= x1 || y0 >= y1 {
+        return true;
+    }
+    let sq = |v: i64| {
+        let v = v.unsigned_abs().min(u64::from(u32::MAX)) as u32;
+        crate::arith::mul_wide(v, v)
+    };
+    let near = sq((x0 - cx).max(cx - x1).max(0)).saturating_add(sq((y0 - cy).max(cy - y1).max(0)));
+    let far = sq((cx - x0).abs().max((cx - x1).abs()))
+        .saturating_add(sq((cy - y0).abs().max((cy - y1).abs())));
+    let (inner, outer) = (
+        inner.min(u64::from(u32::MAX)),
+        outer.min(u64::from(u32::MAX)),
+    );
+    far <= sq(inner as i64) || near >= sq(outer as i64)
+}
+
 fn circle_box(c: FinePoint, outer: u32) -> Option<FineRect> {
     let reach = i32::try_from(outer.div_ceil(4)).ok()?.saturating_add(16);
     let b = FineRect {
