@@ -159,6 +159,17 @@ impl CornerRadii {
                 f = (side, sum);
             }
         }
+        if f == (1, 1) {
+            // Every pair fits its side (zero radii too): the corners as
+            // they are, without the divisions by one.
+            let s = |(x, y): (i64, i64)| (x as u32, y as u32);
+            return CornerRadii {
+                top_left: s(tl),
+                top_right: s(tr),
+                bottom_right: s(br),
+                bottom_left: s(bl),
+            };
+        }
         let scale = |v: i64| -> u32 {
             if f.1 == 0 {
                 return 0;
@@ -441,5 +452,67 @@ impl Shape for RoundedRectangle {
             polygon(sink, |out| inner.points(true, tol, out));
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::path::testing::Lcg;
+
+    /// CSS's corner-overlap rule as written down, in exact rationals: `f =
+    /// min(1, side / (r1 + r2))` over the four sides (a corner with a zero
+    /// radius counts as none), each radius `floor(r f)`.
+    fn css(r: &CornerRadii, w: u32, h: u32) -> CornerRadii {
+        let fix = |(x, y): (u32, u32)| if x == 0 || y == 0 { (0, 0) } else { (x, y) };
+        let (tl, tr, br, bl) = (
+            fix(r.top_left),
+            fix(r.top_right),
+            fix(r.bottom_right),
+            fix(r.bottom_left),
+        );
+        let sides = [
+            (w, tl.0 + tr.0),
+            (h, tr.1 + br.1),
+            (w, br.0 + bl.0),
+            (h, bl.1 + tl.1),
+        ];
+        let (mut num, mut den) = (1u128, 1u128);
+        for (side, sum) in sides {
+            let (side, sum) = (u128::from(side), u128::from(sum));
+            if sum > 0 && side * den < num * sum {
+                (num, den) = (side, sum);
+            }
+        }
+        let s = |(x, y): (u32, u32)| {
+            (
+                (u128::from(x) * num / den) as u32,
+                (u128::from(y) * num / den) as u32,
+            )
+        };
+        CornerRadii {
+            top_left: s(tl),
+            top_right: s(tr),
+            bottom_right: s(br),
+            bottom_left: s(bl),
+        }
+    }
+
+    #[test]
+    fn radii_are_clamped_by_the_css_rule() {
+        let mut rng = Lcg(0xc0_44e4_5eed);
+        let mut r = |m: u64| rng.below(m) as u32;
+        for case in 0..20_000 {
+            let big = if case % 2 == 0 { 1 << 12 } else { 1 << 30 };
+            let radius = |r: &mut dyn FnMut(u64) -> u32| (r(big) >> r(20), r(big) >> r(20));
+            let radii = CornerRadii {
+                top_left: radius(&mut r),
+                top_right: radius(&mut r),
+                bottom_right: radius(&mut r),
+                bottom_left: radius(&mut r),
+            };
+            let (w, h) = (r(big) >> r(12), r(big) >> r(12));
+            assert_eq!(radii.clamped(w, h), css(&radii, w, h), "{radii:?} {w} {h}");
+        }
     }
 }
