@@ -1,11 +1,13 @@
 //! Outlines kept from one frame to the next, in caller-provided segments.
 //!
 //! A shape is described again in every band it touches: for the curves of
-//! a dial (circles, arcs, rounded corners) that is most of a frame's cost
-//! after the flush. A [`ShapeCache`] keeps the outline of every shape whose
-//! geometry has a key ([`Shape::key`](crate::path::Shape::key): circles,
-//! ellipses, arcs, sectors, rectangles, rounded rectangles, lines), filled
-//! or stroked without dashes: the first band that draws it describes it
+//! a dial (circles, arcs, rounded corners) or a chart's stroke that is
+//! most of a frame's cost after the flush. A [`ShapeCache`] keeps the
+//! outline of every shape that has a key
+//! ([`Shape::key`](crate::path::Shape::key): circles, ellipses, arcs,
+//! sectors, rectangles, rounded rectangles and lines by their geometry;
+//! polylines, polygons and SVG paths by their description), filled or
+//! stroked without dashes: the first band that draws it describes it
 //! whole into the cache's segments, and every later band, in this frame
 //! and the next ones, walks the segments kept (only those crossing the
 //! band's rows). The segments are those the shape describes, in the same
@@ -14,7 +16,13 @@
 //!
 //! An outline is found by its key (the shape's geometry, the stroke, the
 //! tolerance), compared exactly, so a scene that changes keeps what did
-//! not change and describes what did. Entries not drawn in the current
+//! not change and describes what did. A shape known by its description
+//! has its description kept too, as the points its path sends (tag points
+//! marking each call: `path::shape::key`), in the segments before its
+//! outline; its key holds their number and a hash of them, and the kept
+//! points are compared with the shape's, point for point, before its
+//! outline is filled (16 bytes for every two points: a 60-point polyline
+//! 31 segments). Entries not drawn in the current
 //! frame make room when the segments run short (the segments kept are then
 //! moved together); a shape whose outline still does not fit, or whose
 //! stroke fails, is marked and drawn directly from then on.
