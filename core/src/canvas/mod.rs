@@ -1477,10 +1477,6 @@ fn sampled_edge<const C: usize>(
     }
 }
 
-/// The box of a circle about `c` of radius `outer` (1/4096 px) as its
-/// outline's (`paths::shape_bounds`, widened by the curves' margin), when
-/// all of it is in range; `None` otherwise (the outline path then reports
-/// the shape). Saturating: a centre near the `i32` ends is out of range.
 /// True when the ring of radii `inner <= outer` (quarter fine units; a
 /// disc for `inner` 0) about `c` has no area in the pixels of `rows` x
 /// `cols`: the pixels lie wholly inside the hole (their farthest corner
@@ -1516,6 +1512,10 @@ pub(crate) fn ring_misses(
     far <= sq(inner as i64) || near >= sq(outer as i64)
 }
 
+/// The box of a circle about `c` of radius `outer` (1/4096 px) as its
+/// outline's (`paths::shape_bounds`, widened by the curves' margin), when
+/// all of it is in range; `None` otherwise (the outline path then reports
+/// the shape). Saturating: a centre near the `i32` ends is out of range.
 fn circle_box(c: FinePoint, outer: u32) -> Option<FineRect> {
     let reach = i32::try_from(outer.div_ceil(4)).ok()?.saturating_add(16);
     let b = FineRect {
