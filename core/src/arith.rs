@@ -171,23 +171,13 @@ pub(crate) fn mul_i64(a: i64, b: i64) -> i64 {
     mul_i64_halves(a, b)
 }
 
-/// [`mul_i64`] as 32-bit targets take it (tested on every host).
+/// [`mul_i64`] as 32-bit targets take it (tested on every host; there
+/// [`imul_wide`] is [`mul_wide_halves`]'s, tested on its own).
 #[inline]
 fn mul_i64_halves(a: i64, b: i64) -> i64 {
     match (i32::try_from(a), i32::try_from(b)) {
-        (Ok(a), Ok(b)) => imul_wide_halves(a, b),
+        (Ok(a), Ok(b)) => imul_wide(a, b),
         _ => a * b,
-    }
-}
-
-/// [`imul_wide`] from [`mul_wide_halves`].
-#[inline]
-fn imul_wide_halves(a: i32, b: i32) -> i64 {
-    let p = mul_wide_halves(a.unsigned_abs(), b.unsigned_abs()) as i64;
-    if (a < 0) != (b < 0) {
-        -p
-    } else {
-        p
     }
 }
 
@@ -202,11 +192,12 @@ pub(crate) fn mul_i128(a: i64, b: i64) -> i128 {
     mul_i128_halves(a, b)
 }
 
-/// [`mul_i128`] as 32-bit targets take it (tested on every host).
+/// [`mul_i128`] as 32-bit targets take it (tested on every host, as
+/// [`mul_i64_halves`]).
 #[inline]
 fn mul_i128_halves(a: i64, b: i64) -> i128 {
     match (i32::try_from(a), i32::try_from(b)) {
-        (Ok(a), Ok(b)) => i128::from(imul_wide_halves(a, b)),
+        (Ok(a), Ok(b)) => i128::from(imul_wide(a, b)),
         _ => i128::from(a) * i128::from(b),
     }
 }
