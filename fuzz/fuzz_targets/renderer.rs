@@ -129,6 +129,20 @@ fn angle(inp: &mut Input<'_>) -> f32 {
     }
 }
 
+/// A window inside the `w x h` frame, at least a pixel each way.
+fn window_in(inp: &mut Input<'_>, w: u16, h: u16) -> Rectangle {
+    Rectangle::new(
+        Point::new(
+            inp.range(0, i32::from(w) - 1),
+            inp.range(0, i32::from(h) - 1),
+        ),
+        Size::new(
+            inp.range(1, i32::from(w)) as u32,
+            inp.range(1, i32::from(h)) as u32,
+        ),
+    )
+}
+
 fn color(inp: &mut Input<'_>) -> Rgb565 {
     Rgb565::new(inp.u8() & 31, inp.u8() & 63, inp.u8() & 31)
 }
@@ -559,16 +573,7 @@ fuzz_target!(|data: &[u8]| {
         })
         .collect();
     let list_first = usize::from(inp.u8()) % (items.len() + 1);
-    let window = Rectangle::new(
-        Point::new(
-            inp.range(0, i32::from(w) - 1),
-            inp.range(0, i32::from(h) - 1),
-        ),
-        Size::new(
-            inp.range(1, i32::from(w)) as u32,
-            inp.range(1, i32::from(h)) as u32,
-        ),
-    );
+    let window = window_in(&mut inp, w, h);
     // The renderer kept over frames, and the frame that changes.
     let kept_slots = [1, 4, 64][usize::from(inp.u8() % 3)];
     let kept_rows = [1, 3, 16][usize::from(inp.u8() % 3)].min(h);
@@ -591,16 +596,7 @@ fuzz_target!(|data: &[u8]| {
         items_b[k].paint.color = color(&mut inp);
     }
     let list_first_b = usize::from(inp.u8()) % (items_b.len() + 1);
-    let window_b = Rectangle::new(
-        Point::new(
-            inp.range(0, i32::from(w) - 1),
-            inp.range(0, i32::from(h) - 1),
-        ),
-        Size::new(
-            inp.range(1, i32::from(w)) as u32,
-            inp.range(1, i32::from(h)) as u32,
-        ),
-    );
+    let window_b = window_in(&mut inp, w, h);
     let scene = Scene {
         w,
         h,
