@@ -520,6 +520,96 @@ fn unscaled_images_at_whole_pixels_are_copied_texel_for_pixel() {
     assert_eq!(got[7 * usize::from(W) + 4], [0; 3]);
 }
 
+/// `bytes` as a `w x h` image of format `kind` (Rgb565, Rgb565Be, Rgb888,
+/// Gray8) drawn unscaled at `at`.
+fn copy_image<const C: usize>(
+    c: &mut Canvas<'_, '_, C>,
+    kind: u32,
+    bytes: &[u8],
+    w: u16,
+    h: u16,
+    at: FinePoint,
+) -> Result<(), DrawError> {
+    fn one<F: format::TexelFormat, const C: usize>(
+        c: &mut Canvas<'_, '_, C>,
+        bytes: &[u8],
+        w: u16,
+        h: u16,
+        at: FinePoint,
+    ) -> Result<(), DrawError> {
+        let src = RawImage::<F>::new(bytes, w, h).expect("a whole image");
+        c.draw_image(&AaImage::new(&src).position(at))
+    }
+    match kind {
+        0 => one::<format::Rgb565, C>(c, bytes, w, h, at),
+        1 => one::<format::Rgb565Be, C>(c, bytes, w, h, at),
+        2 => one::<format::Rgb888, C>(c, bytes, w, h, at),
+        _ => one::<format::Gray8, C>(c, bytes, w, h, at),
+    }
+}
+
+/// Every opaque format of whole bytes, unscaled at whole pixels and
+/// partly outside the frame (runs that start and end inside the image's
+/// rows, and runs cut by its sides), on three channels and on one: each
+/// pixel the texel decoded by the sRGB tables from the bytes (its
+/// luminance on one channel), every other pixel the background.
+#[test]
+fn unscaled_opaque_formats_copy_every_texel_on_every_run() {
+    use softedge::color::srgb::{luminance, SRGB5_TO_LIN12, SRGB6_TO_LIN12};
+    let t5 = |v: u32| SRGB5_TO_LIN12[(v & 31) as usize];
+    let t8 = |v: u32| SRGB8_TO_LIN12[(v & 255) as usize];
+    let decode = |kind: u32, b: &[u8]| -> [u16; 3] {
+        match kind {
+            0 | 1 => {
+                let v = if kind == 0 {
+                    u32::from(b[0]) | u32::from(b[1]) << 8
+                } else {
+                    u32::from(b[1]) | u32::from(b[0]) << 8
+                };
+                [t5(v >> 11), SRGB6_TO_LIN12[((v >> 5) & 63) as usize], t5(v)]
+            }
+            2 => [t8(b[0].into()), t8(b[1].into()), t8(b[2].into())],
+            _ => [t8(b[0].into()); 3],
+        }
+    };
+    let mut rng = Lcg(0x5eed_c0b1);
+    for case in 0..48 {
+        let kind = case % 4;
+        let bpt = [2usize, 2, 3, 1][kind as usize];
+        let (w, h) = (1 + rng.below(40) as u16, 1 + rng.below(30) as u16);
+        let bytes: Vec<u8> = (0..bpt * usize::from(w) * usize::from(h))
+            .map(|_| rng.below(256) as u8)
+            .collect();
+        let (px, py) = (
+            rng.below(u64::from(W) + 40) as i32 - 40,
+            rng.below(u64::from(H) + 30) as i32 - 30,
+        );
+        let rows = [1u16, 3, 16][case as usize % 3];
+        let bg = [100u16, 2000, 4095];
+        let at = FinePoint::from_px(px, py);
+        let (got3, err) = render::<3>(rows, bg, |c| copy_image(c, kind, &bytes, w, h, at));
+        assert!(err.is_none(), "case {case}: {err:?}");
+        let (got1, err) = render::<1>(rows, [bg[1]], |c| copy_image(c, kind, &bytes, w, h, at));
+        assert!(err.is_none(), "case {case}: {err:?}");
+        for y in 0..i32::from(H) {
+            for x in 0..i32::from(W) {
+                let (i, j) = (x - px, y - py);
+                let k = y as usize * usize::from(W) + x as usize;
+                let inside = (0..i32::from(w)).contains(&i) && (0..i32::from(h)).contains(&j);
+                let (want3, want1) = if inside {
+                    let o = bpt * (j as usize * usize::from(w) + i as usize);
+                    let c = decode(kind, &bytes[o..o + bpt]);
+                    (c, [if kind == 3 { c[0] } else { luminance(c) }])
+                } else {
+                    (bg, [bg[1]])
+                };
+                assert_eq!(got3[k], want3, "case {case} ({kind}), pixel {x}, {y}");
+                assert_eq!(got1[k], want1, "case {case} ({kind}) gray, pixel {x}, {y}");
+            }
+        }
+    }
+}
+
 #[test]
 fn bad_images_and_transforms_are_typed_errors_and_draw_nothing() {
     let data = [0u8; 64];

@@ -58,6 +58,14 @@ pub(crate) trait TexelRun<const C: usize>: core::fmt::Debug {
     fn tint(&self) -> [i32; C] {
         [0; C]
     }
+    /// Stores the samples of the whole pixels `px` (`C` values a pixel)
+    /// from frame pixel `(x, y)` rightwards, as an opaque over of them
+    /// does (each pixel's value becomes its sample), when the sampler
+    /// can do so a row at a time: true when it did. Only an opaque
+    /// sampler is asked.
+    fn store_whole(&self, _px: &mut [i32], _x: i32, _y: i32) -> bool {
+        false
+    }
 }
 
 /// An image paint as the sweep holds it (a trait object: one call per
@@ -86,6 +94,9 @@ impl<const C: usize, T: TexelRun<C>> ImageRuns<C> for T {
         }
         let whole = k == WHOLE;
         let k = if whole { COVER_ONE } else { k };
+        if T::OPAQUE && whole && matches!(op, ComposeOp::Over(_)) && self.store_whole(px, x, y) {
+            return;
+        }
         let (mode, base) = match op {
             ComposeOp::Over(_) if whole => (Mode::OverWhole, [0; C]),
             ComposeOp::Over(_) => (Mode::OverPart, [0; C]),

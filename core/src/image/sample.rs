@@ -191,9 +191,33 @@ impl<F: Fetch, const C: usize> TexelRun<C> for CopyRun<'_, F, C> {
     fn tint(&self) -> [i32; C] {
         self.tint
     }
+    /// A run inside the image's columns, on one of its rows: its texels
+    /// decoded from the row in order, each stored as it is (an opaque
+    /// texel's colour is its pixel's value). A run reaching past the
+    /// image's sides takes the clamped texels pixel by pixel.
+    fn store_whole(&self, px: &mut [i32], x: i32, y: i32) -> bool {
+        if !Self::OPAQUE {
+            return false;
+        }
+        let (i, j) = self.start(x, y);
+        let n = px.len() / C;
+        let inside =
+            i >= 0 && (j as u32) < self.h as u32 && i64::from(i) + n as i64 <= i64::from(self.w);
+        if !inside {
+            return false;
+        }
+        let mut out = px.chunks_exact_mut(C);
+        self.fetch.row(i, j, n, |t| {
+            if let Some(p) = out.next() {
+                let c = channels::<F, C>(&t);
+                for (v, c) in p.iter_mut().zip(c) {
+                    *v = (c << COVER_BITS) as i32;
+                }
+            }
+        });
+        true
+    }
 }
-
-// -------------------------------------------------------------- bilinear
 
 struct Bilinear<'f, F, const C: usize> {
     fetch: &'f F,
@@ -253,10 +277,8 @@ fn bilinear<F: Fetch, const C: usize>(f: &F, w: i32, h: i32, u: i64, v: i64) -> 
     let fv = (v as u32) >> (32 - ALPHA_BITS);
     let (x0, x1) = pair((u >> 32) as i32, w);
     let (y0, y1) = pair((v >> 32) as i32, h);
-    let t00 = f.texel(x0, y0);
-    let t10 = f.texel(x1, y0);
-    let t01 = f.texel(x0, y1);
-    let t11 = f.texel(x1, y1);
+    let (t00, t10) = f.pair(x0, x1, y0);
+    let (t01, t11) = f.pair(x0, x1, y1);
     // Weights in 2^-20, summing to 2^20.
     let w11 = fu * fv;
     let w10 = (fu << ALPHA_BITS) - w11;

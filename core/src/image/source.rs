@@ -118,16 +118,19 @@ pub struct RawTexels<'a, F> {
     image: RawImage<'a, F>,
 }
 
-impl<F: Decode> Fetch for RawTexels<'_, F> {
-    const OPAQUE: bool = F::OPAQUE;
-    const MASK: bool = F::MASK;
-    const GRAY: bool = F::GRAY;
+impl<F: Decode> RawTexels<'_, F> {
+    /// The bytes of row `y` onwards (empty past the data's end).
     #[inline(always)]
-    fn texel(&self, x: i32, y: i32) -> Lin {
+    fn row_bytes(&self, y: usize) -> &[u8] {
         let i = &self.image;
-        let (x, y) = (x as usize, y as usize);
-        let raw = i.data.get(y * i.stride..).and_then(|row| F::raw(row, x));
-        let Some(raw) = raw else {
+        i.data.get(y * i.stride..).unwrap_or_default()
+    }
+
+    /// Texel `x` of row `y`, whose bytes onwards are `row`.
+    #[inline(always)]
+    fn decode_at(&self, row: &[u8], x: usize, y: usize) -> Lin {
+        let i = &self.image;
+        let Some(raw) = F::raw(row, x) else {
             return Lin { c: [0; 3], a: 0 };
         };
         let plane = if F::PLANE {
@@ -139,6 +142,54 @@ impl<F: Decode> Fetch for RawTexels<'_, F> {
             u8::MAX
         };
         F::decode(raw, plane, i.key)
+    }
+}
+
+impl<F: Decode> Fetch for RawTexels<'_, F> {
+    const OPAQUE: bool = F::OPAQUE;
+    const MASK: bool = F::MASK;
+    const GRAY: bool = F::GRAY;
+    #[inline(always)]
+    fn texel(&self, x: i32, y: i32) -> Lin {
+        let (x, y) = (x as usize, y as usize);
+        self.decode_at(self.row_bytes(y), x, y)
+    }
+
+    /// Both texels from one look-up of the row.
+    #[inline(always)]
+    fn pair(&self, x0: i32, x1: i32, y: i32) -> (Lin, Lin) {
+        let y = y as usize;
+        let row = self.row_bytes(y);
+        (
+            self.decode_at(row, x0 as usize, y),
+            self.decode_at(row, x1 as usize, y),
+        )
+    }
+
+    /// Whole-byte texels without a plane: the run's bytes sliced once,
+    /// a texel from each `BITS / 8` of them.
+    #[inline(always)]
+    fn row(&self, x: i32, y: i32, n: usize, mut f: impl FnMut(Lin)) {
+        let i = &self.image;
+        let b = (F::BITS / 8) as usize;
+        if !F::PLANE && F::BITS % 8 == 0 && b > 0 && x >= 0 && y >= 0 {
+            let start = (y as usize)
+                .saturating_mul(i.stride)
+                .saturating_add((x as usize).saturating_mul(b));
+            let end = start.saturating_add(n.saturating_mul(b));
+            if let Some(bytes) = i.data.get(start..end) {
+                for t in bytes.chunks_exact(b) {
+                    f(match F::raw(t, 0) {
+                        Some(raw) => F::decode(raw, u8::MAX, i.key),
+                        None => Lin { c: [0; 3], a: 0 },
+                    });
+                }
+                return;
+            }
+        }
+        for k in 0..n {
+            f(self.texel(x.wrapping_add(k as i32), y));
+        }
     }
 }
 
@@ -275,6 +326,69 @@ mod eg {
             let (w, h) = eg_size(self);
             check_size(w, h)?;
             Ok(f(&Owned(*self)))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::image::format::{
+        Alpha1, Alpha2, Alpha4, Alpha8, Gray8, Keyed, PlaneAlpha, Rgb565, Rgb565Be, Rgb888,
+        Rgba8888,
+    };
+    use crate::path::testing::Lcg;
+
+    /// A row's texels and a pair's, read once per row, are the texels one
+    /// by one, for every format (planes and keys included) and every run.
+    fn rows_and_pairs_are_texels<F: TexelFormat>(rng: &mut Lcg) {
+        extern crate std;
+        use std::vec::Vec;
+        let (w, h) = (1 + rng.below(19) as u16, 1 + rng.below(7) as u16);
+        let stride = (usize::from(w) * F::BITS as usize).div_ceil(8);
+        let data: Vec<u8> = (0..stride * usize::from(h))
+            .map(|_| rng.below(256) as u8)
+            .collect();
+        let plane: Vec<u8> = (0..usize::from(w) * usize::from(h))
+            .map(|_| rng.below(256) as u8)
+            .collect();
+        let mut img = RawImage::<F>::new(&data, w, h).unwrap();
+        if F::PLANE {
+            img = img.with_alpha_plane(&plane).unwrap();
+        }
+        let img = img.with_color_key(u32::from(data[0]) | u32::from(data[stride - 1]) << 8);
+        img.with_rows(0..i32::from(h), |f| {
+            for y in 0..i32::from(h) {
+                for x0 in 0..i32::from(w) {
+                    for x1 in x0..i32::from(w) {
+                        assert_eq!(f.pair(x0, x1, y), (f.texel(x0, y), f.texel(x1, y)));
+                        let n = (x1 - x0) as usize;
+                        let mut got = Vec::new();
+                        f.row(x0, y, n, |t| got.push(t));
+                        let want: Vec<Lin> = (x0..x1).map(|x| f.texel(x, y)).collect();
+                        assert_eq!(got, want, "{} bits, row {y}, {x0}..{x1}", F::BITS);
+                    }
+                }
+            }
+        })
+        .unwrap();
+    }
+
+    #[test]
+    fn rows_and_pairs_read_the_texels_of_every_format() {
+        let mut rng = Lcg(0x7e_4e15);
+        for _ in 0..20 {
+            rows_and_pairs_are_texels::<Rgb565>(&mut rng);
+            rows_and_pairs_are_texels::<Rgb565Be>(&mut rng);
+            rows_and_pairs_are_texels::<Rgb888>(&mut rng);
+            rows_and_pairs_are_texels::<Gray8>(&mut rng);
+            rows_and_pairs_are_texels::<Rgba8888>(&mut rng);
+            rows_and_pairs_are_texels::<Alpha1>(&mut rng);
+            rows_and_pairs_are_texels::<Alpha2>(&mut rng);
+            rows_and_pairs_are_texels::<Alpha4>(&mut rng);
+            rows_and_pairs_are_texels::<Alpha8>(&mut rng);
+            rows_and_pairs_are_texels::<Keyed<Rgb565>>(&mut rng);
+            rows_and_pairs_are_texels::<PlaneAlpha<Rgb888>>(&mut rng);
         }
     }
 }
