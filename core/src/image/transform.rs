@@ -186,6 +186,12 @@ impl Mapping {
             (s * sy) >> 16,
             (c * sy) >> 16,
         );
+        // Unrotated at scale 1 (a copy, or an icon placed between pixels),
+        // the matrix is 2^30 times the identity and each corner is the
+        // position plus its offset, exactly what the products round to:
+        // without them (64-bit products are library calls on a
+        // Cortex-M0, and every band sets its image's mapping up again).
+        let identity = binary == 0 && sx == 1 << 16 && sy == 1 << 16;
         let corner = |tu: i32, tv: i32| -> Result<FinePoint, ImageFault> {
             let du = i64::from(tu) * (1 << FINE_BITS) - i64::from(t.pivot.x);
             let dv = i64::from(tv) * (1 << FINE_BITS) - i64::from(t.pivot.y);
@@ -193,10 +199,14 @@ impl Mapping {
             // range anyway.
             let m =
                 |a: i64, b: i64, c: i64, d: i64| a.checked_mul(b)?.checked_add(c.checked_mul(d)?);
-            let (Some(x), Some(y)) = (m(fc_x, du, -fs_y, dv), m(fs_x, du, fc_y, dv)) else {
-                return Err(ImageFault::Range);
+            let (x, y) = if identity {
+                (px + du, py + dv)
+            } else {
+                let (Some(x), Some(y)) = (m(fc_x, du, -fs_y, dv), m(fs_x, du, fc_y, dv)) else {
+                    return Err(ImageFault::Range);
+                };
+                (px + round_q30(x), py + round_q30(y))
             };
-            let (x, y) = (px + round_q30(x), py + round_q30(y));
             match (i32::try_from(x), i32::try_from(y)) {
                 (Ok(x), Ok(y)) if FinePoint::new(x, y).in_range() => Ok(FinePoint::new(x, y)),
                 _ => Err(ImageFault::Range),
@@ -275,6 +285,53 @@ impl Mapping {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Unrotated at scale 1, every corner is the position plus the
+    /// corner's offset from the pivot, in exact integers, and a corner
+    /// beyond the coordinate range is a range fault; the same corners as
+    /// the matrix products give (a scale of one step above 1 beside it
+    /// moves them).
+    #[test]
+    fn unscaled_unrotated_corners_are_the_position_plus_the_offsets() {
+        let mut rng = crate::path::testing::Lcg(0x0001_dec0);
+        let lim = i64::from(crate::geom::FINE_LIMIT);
+        for k in 0..20_000 {
+            let near = |rng: &mut crate::path::testing::Lcg| -> i32 {
+                let v = if k % 2 == 0 {
+                    rng.below(2 * lim as u64 + 1) as i64 - lim
+                } else {
+                    // Near the ends of the range.
+                    (lim - rng.below(70_000) as i64) * if rng.below(2) == 0 { 1 } else { -1 }
+                };
+                v as i32
+            };
+            let position = FinePoint::new(near(&mut rng), near(&mut rng));
+            let pivot = FinePoint::new(
+                rng.below(1 << 23) as i32 - (1 << 22),
+                rng.below(1 << 23) as i32 - (1 << 22),
+            );
+            let (w, h) = (1 + rng.below(4096) as u16, 1 + rng.below(4096) as u16);
+            let t = ImageTransform {
+                position,
+                pivot,
+                ..ImageTransform::default()
+            };
+            let want: Option<[FinePoint; 4]> = (|| {
+                let c = |tu: i64, tv: i64| {
+                    let x = i64::from(position.x) + tu * 1024 - i64::from(pivot.x);
+                    let y = i64::from(position.y) + tv * 1024 - i64::from(pivot.y);
+                    (x.abs() <= lim && y.abs() <= lim).then(|| FinePoint::new(x as i32, y as i32))
+                };
+                let (w, h) = (i64::from(w), i64::from(h));
+                Some([c(0, 0)?, c(w, 0)?, c(w, h)?, c(0, h)?])
+            })();
+            match (Mapping::new(&t, (w, h)), want) {
+                (Ok(m), Some(c)) => assert_eq!(m.corners, c, "{t:?} {w}x{h}"),
+                (Err(ImageFault::Range), None) => {}
+                (got, want) => panic!("{t:?} {w}x{h}: {:?} vs {want:?}", got.map(|m| m.corners)),
+            }
+        }
+    }
 
     #[test]
     fn identity_copies_and_maps_centres_to_centres() {
