@@ -112,15 +112,17 @@ pub(crate) mod sealed {
         /// Texel `(x, y)`, `0 <= x < width`, `0 <= y < height`; one it
         /// cannot read (data short, a row not held) is transparent.
         fn texel(&self, x: i32, y: i32) -> Lin;
-        /// Texels `x..x + n` of row `y`, in order, to `f` (a run inside
-        /// the image: `0 <= x`, `x + n <= width`, `0 <= y < height`): what
-        /// [`texel`](Self::texel) gives for each. A source in memory reads
-        /// the row's bytes once, not a row look-up per texel.
-        /// Texels `(x0, y)` and `(x1, y)` (both inside the image).
+        /// Texels `(x0, y)` and `(x1, y)` (both inside the image): what
+        /// [`texel`](Self::texel) gives for each. A source in memory looks
+        /// the row up once.
         #[inline(always)]
         fn pair(&self, x0: i32, x1: i32, y: i32) -> (Lin, Lin) {
             (self.texel(x0, y), self.texel(x1, y))
         }
+        /// Texels `x..x + n` of row `y`, in order, to `f` (a run inside
+        /// the image: `0 <= x`, `x + n <= width`, `0 <= y < height`): what
+        /// [`texel`](Self::texel) gives for each. A source in memory reads
+        /// the row's bytes once, not a row look-up per texel.
         #[inline(always)]
         fn row(&self, x: i32, y: i32, n: usize, mut f: impl FnMut(Lin)) {
             for k in 0..n {

@@ -219,6 +219,8 @@ impl<F: Fetch, const C: usize> TexelRun<C> for CopyRun<'_, F, C> {
     }
 }
 
+// -------------------------------------------------------------- bilinear
+
 struct Bilinear<'f, F, const C: usize> {
     fetch: &'f F,
     /// The mapping with `-1/2 + 1/2048` texel folded into `u[0]`, `v[0]`.

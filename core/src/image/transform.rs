@@ -288,9 +288,7 @@ mod tests {
 
     /// Unrotated at scale 1, every corner is the position plus the
     /// corner's offset from the pivot, in exact integers, and a corner
-    /// beyond the coordinate range is a range fault; the same corners as
-    /// the matrix products give (a scale of one step above 1 beside it
-    /// moves them).
+    /// beyond the coordinate range is a range fault.
     #[test]
     fn unscaled_unrotated_corners_are_the_position_plus_the_offsets() {
         let mut rng = crate::path::testing::Lcg(0x0001_dec0);
