@@ -220,14 +220,49 @@ pub(crate) fn arc_count(r: i64, sweep: i64, tol: Tolerance) -> u32 {
         return 1;
     }
     let by_angle = s.div_ceil(1 << 29);
+    let (num, den) = deviation(r, s, tol);
+    let q = num.div_ceil(den).min(1 << 40) as u64;
+    let by_dev = super::trig::ceil_sqrt_u64(q);
+    by_angle.max(by_dev).clamp(1, u64::from(MAX_ARC_SEGMENTS)) as u32
+}
+
+/// [`arc_count`]'s deviation bound for a sweep of `s` binary units: `m`
+/// segments keep within `tol` when `m^2 >= num / den`.
+#[inline]
+fn deviation(r: i64, s: u64, tol: Tolerance) -> (u128, u128) {
     // m^2 >= 9 s^2 r / (50 tol), s in radians: s_rad = s * 2 pi / 2^32.
     let s_rad_q31 = super::trig::radians_q31(s as i64) as u128; // < 2^34
     let num = s_rad_q31 * s_rad_q31 * 9 * r.max(0) as u128; // < 2^68 * 9 * 2^23
                                                             // `Tolerance` is at least 1; `max` keeps the division's panic out.
     let den = (50 * u128::from(tol.fine().max(1))) << 62;
-    let q = num.div_ceil(den).min(1 << 40) as u64;
-    let by_dev = super::trig::ceil_sqrt_u64(q);
-    by_angle.max(by_dev).clamp(1, u64::from(MAX_ARC_SEGMENTS)) as u32
+    (num, den)
+}
+
+/// The widest sweep (binary units, at most an eighth of a turn) that
+/// [`arc_count`] draws in one segment at radius `r`: `arc_count(r, s)` is
+/// 1 for every `|s|` up to it and more above it. Found by halving the
+/// interval with the deviation bound's own test (no division), once for
+/// a radius: a join then knows from its turn's bound alone that its arc
+/// is a single chord, without measuring the turn.
+pub(crate) fn one_segment_sweep(r: i64, tol: Tolerance) -> i64 {
+    let fits = |s: u64| {
+        let (num, den) = deviation(r, s, tol);
+        num <= den
+    };
+    let (mut lo, mut hi) = (0u64, 1u64 << 29);
+    if fits(hi) {
+        return hi as i64;
+    }
+    // fits(lo), !fits(hi).
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if fits(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    lo as i64
 }
 
 /// The area-preserving factor `g` (Q30) of the inner vertices of an arc
@@ -810,6 +845,26 @@ mod tests {
         }
     }
     use super::*;
+
+    /// The widest one-segment sweep is `arc_count`'s edge: 1 there, more
+    /// one unit beyond (below an eighth of a turn, where the angle alone
+    /// asks for a second segment).
+    #[test]
+    fn the_one_segment_sweep_is_where_arc_count_turns_to_two() {
+        let mut rng = crate::path::testing::Lcg(0x0015_e9e1);
+        for k in 0..3000 {
+            let r = match k % 3 {
+                0 => rng.below(64) as i64,
+                1 => rng.below(1 << 16) as i64,
+                _ => rng.below(1 << 31) as i64,
+            };
+            let tol = Tolerance::new(1 + rng.below(256) as u16);
+            let s = one_segment_sweep(r, tol);
+            assert_eq!(arc_count(r, s, tol), 1, "r {r} tol {tol:?} s {s}");
+            assert_eq!(arc_count(r, -s, tol), 1, "r {r} tol {tol:?} s {s}");
+            assert!(arc_count(r, s + 1, tol) > 1, "r {r} tol {tol:?} s {s}");
+        }
+    }
     use crate::path::testing::Lcg;
 
     #[test]

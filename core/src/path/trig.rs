@@ -581,6 +581,32 @@ mod tests {
         assert!(worst < 4e-9, "{worst}");
     }
 
+    /// The integer `atan2` of a vector in the first quadrant (the turns
+    /// of round joins) is at most `ATAN2_SLACK` binary units above the
+    /// exact angle (`f64`, exact to far below a unit here), whatever the
+    /// vector's length up to 2^31.
+    #[test]
+    fn atan2_is_within_its_slack_of_the_exact_angle() {
+        extern crate std;
+        let slack = crate::path::stroke::outline::ATAN2_SLACK;
+        let mut rng = crate::path::testing::Lcg(0x0a7a_2e5a);
+        let mut worst = 0f64;
+        for k in 0..200_000u64 {
+            let x = 1 + rng.below(1 << (1 + k % 31)) as i64;
+            // Small turns (most joins of a curve), and any.
+            let y = if k % 2 == 0 {
+                (x >> rng.below(24)) * rng.below(3) as i64 / 2
+            } else {
+                rng.below(1 << 31) as i64
+            };
+            let exact = (y as f64).atan2(x as f64) / core::f64::consts::TAU * 4_294_967_296.0;
+            let got = f64::from(atan2(y, x));
+            worst = worst.max(got - exact);
+            assert!(got <= exact + slack as f64, "({x}, {y}): {got} vs {exact}");
+        }
+        std::println!("atan2 at most {worst:.2} units above the exact angle");
+    }
+
     #[test]
     fn atan2_inverts_cos_sin() {
         for i in 0..3000u32 {

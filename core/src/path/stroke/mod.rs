@@ -552,7 +552,9 @@ impl<'s, 'd, S: SegmentSink + ?Sized> Stroker<'s, 'd, S> {
                 }
             }
         }
-        Piece::straight(a, b, self.sides)
+        // `Piece::straight(a, b)`, its unit vector already known.
+        let n = chord.right();
+        Some(Piece::new(a, b, n, n, self.sides))
     }
 
     /// Half the widest reach, fine units (for the extra curve segments).

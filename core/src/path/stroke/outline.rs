@@ -52,7 +52,9 @@
 //! memory.
 
 use crate::arith::mul_i128;
-use crate::path::arc::{arc_count, arc_inner_vertices, ellipse_points, EllipseFrame};
+use crate::path::arc::{
+    arc_count, arc_inner_vertices, ellipse_points, one_segment_sweep, EllipseFrame,
+};
 use crate::path::segment::{emit, numbers, Contour, SegmentSink, Vertices};
 use crate::path::trig::{atan2, div_round, Q30, TURN};
 use crate::path::vector::{Pt, Unit, UNIT_X};
@@ -199,7 +201,18 @@ pub(crate) struct Outline<'s, S: SegmentSink + ?Sized> {
     /// What is being sent belongs to a quiet piece: only its numbers go
     /// to the sink (see [`Piece::quiet`]).
     quiet: bool,
+    /// Per reach `h_q1` of a side (none yet: `-1`), the bound `P` of
+    /// [`Outline::one_chord`]: a round join whose turn has
+    /// `cross 2^31 <= P dot` is one chord.
+    one_chord: [(i64, u64); 2],
 }
+
+/// A lower bound of pi: `PI_LO / PI_DEN`.
+const PI_LO: u64 = 314_159_265;
+const PI_DEN: u64 = 100_000_000;
+/// Binary units the integer [`atan2`] may give above the exact angle of
+/// its vector (test: `atan2_is_within_its_slack_of_the_exact_angle`).
+pub(crate) const ATAN2_SLACK: i64 = 16;
 
 impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
     pub fn new(
@@ -222,7 +235,36 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
             held: None,
             run_holds: false,
             quiet: false,
+            one_chord: [(-1, 0); 2],
         }
+    }
+
+    /// True when a round join of reach `h_q1` turning from `ua` to `ub`
+    /// (clockwise: `cross >= 0`, by less than a quarter turn: `dot > 0`)
+    /// is drawn as one chord: when [`arc_count`] of its turn, `atan2(cross,
+    /// dot)`, is 1, known without the `atan2`s. The turn is at most
+    /// `atan(cross / dot) <= (cross / dot) 2^31 / pi` binary units, the
+    /// integer `atan2` at most [`ATAN2_SLACK`] above that; so with `S` the
+    /// widest one-chord sweep ([`one_segment_sweep`]) and `P = (S - slack)
+    /// pi_lo`, `cross 2^31 <= P dot` puts the turn within `S`. `P` is found
+    /// once a reach (the first round join of each side).
+    fn one_chord(&mut self, h_q1: i64, cross: i64, dot: i64) -> bool {
+        if dot <= 0 || cross < 0 {
+            return false;
+        }
+        let slot = usize::from(self.one_chord[0].0 != h_q1 && self.one_chord[0].0 >= 0);
+        let Some(entry) = self.one_chord.get_mut(slot) else {
+            return false;
+        };
+        if entry.0 != h_q1 {
+            // The arc's radius as `wedge` gives it to `arc`.
+            let frame = EllipseFrame::with_q8(Pt::new(0, 0), h_q1 << 7, h_q1 << 7, UNIT_X);
+            let s = one_segment_sweep(frame.major(), self.tol) - ATAN2_SLACK;
+            let p = (s.max(0) as u64 * PI_LO) / PI_DEN;
+            *entry = (h_q1, p);
+        }
+        // cross, dot < 2^31 and P < 2^31: both products below 2^62.
+        (cross as u64) << 31 <= entry.1.saturating_mul(dot as u64)
     }
 
     /// The rows the sink needs ([`SegmentSink::window`]).
@@ -448,8 +490,18 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
             }
             LineJoin::Miter => self.seg(from, to),
             LineJoin::Round => {
+                let cross = ua.cross(ub);
+                if self.one_chord(h_q1, cross, dot) {
+                    // What `arc` sends for an arc of one segment.
+                    if self.quiet {
+                        self.sink.skipped(1);
+                    } else {
+                        emit(self.sink, from, to);
+                    }
+                    return;
+                }
                 let t0 = i64::from(atan2(ua.y, ua.x));
-                let turn = i64::from(atan2(ua.cross(ub), dot));
+                let turn = i64::from(atan2(cross, dot));
                 let c_q8 = Pt::new(v.x << 8, v.y << 8);
                 self.arc(c_q8, h_q1 << 7, t0, turn, from, to);
             }
@@ -633,6 +685,58 @@ pub(super) fn cut_inner(a0: Pt, a1: &mut Pt, b0: &mut Pt, b1: Pt, i: Option<Pt>)
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geom::FinePoint;
+
+    /// A sink that keeps nothing (the join's own test reads `one_chord`).
+    struct Nothing;
+    impl SegmentSink for Nothing {
+        fn segment(&mut self, _: FinePoint, _: FinePoint) {}
+    }
+
+    /// A round join said to be one chord has an arc of one segment by
+    /// the measured turn (`arc_count` of `atan2(cross, dot)`, what `arc`
+    /// draws otherwise); and the test is not idle: the small turns of a
+    /// flattened curve pass it.
+    #[test]
+    fn a_round_join_said_to_be_one_chord_has_one_segment() {
+        let mut rng = crate::path::testing::Lcg(0x0c40_4d15);
+        let mut passed = 0;
+        for k in 0..40_000 {
+            let h_q1 = match k % 3 {
+                0 => 1 + rng.below(64) as i64,
+                1 => 1 + rng.below(1 << 14) as i64,
+                _ => 1 + rng.below(1 << 23) as i64,
+            };
+            let tol = Tolerance::new(1 + rng.below(8) as u16);
+            let mut sink = Nothing;
+            let sides = Sides { m: h_q1, p: h_q1 };
+            let mut o = Outline::new(
+                &mut sink,
+                LineJoin::Round,
+                MiterLimit::DEFAULT,
+                LineCap::Butt,
+                sides,
+                tol,
+            );
+            let a = rng.below(1 << 32) as u32;
+            // Turns of a few binary units up to about a degree.
+            let bits = 1 + rng.below(24);
+            let turn = (rng.below(1 << bits) as u32).max(1);
+            let (ua, ub) = (Unit::from_angle(a), Unit::from_angle(a.wrapping_add(turn)));
+            let (cross, dot) = (ua.cross(ub), ua.dot(ub));
+            if o.one_chord(h_q1, cross, dot) {
+                passed += 1;
+                let frame = EllipseFrame::with_q8(Pt::new(0, 0), h_q1 << 7, h_q1 << 7, UNIT_X);
+                let measured = i64::from(atan2(cross, dot));
+                assert_eq!(
+                    arc_count(frame.major(), measured, tol),
+                    1,
+                    "h {h_q1} turn {turn} ({cross}, {dot})"
+                );
+            }
+        }
+        assert!(passed > 5_000, "{passed}");
+    }
 
     #[test]
     fn a_rectangle_piece_is_convex_and_its_cut_keeps_the_edges() {
