@@ -715,3 +715,103 @@ fn hairlines_keep_their_width() {
         assert_eq!(s.winding_extremes(0.01).0, 0);
     }
 }
+
+/// Distance from `p` to the segment `a b` (px).
+fn to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let l2 = dx * dx + dy * dy;
+    let t = if l2 > 0.0 {
+        (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    ((p.0 - a.0 - t * dx).powi(2) + (p.1 - a.1 - t * dy).powi(2)).sqrt()
+}
+
+/// A wide stroke of a curve keeps its offset edges within the tolerance
+/// of the exact offset curve (`B + h N` and `B - h N`, `f64`), where the
+/// stroke is narrower than the curve's radius of curvature: every point of
+/// the exact offsets lies within `tol + 1` fine units of the outline sent
+/// (the chords' error, the grid's rounding of the offset points and of
+/// the unit normals). The curves: circular-arc cubics of radius 10 to
+/// 1 500 px over a quarter turn and less, stroked up to 1.8 times their
+/// radius wide, and an S-curve, whose turning is uneven along it.
+#[test]
+fn a_wide_curved_stroke_stays_within_the_tolerance_of_its_exact_offset() {
+    let tol_px = (3.0 + 1.0) / 1024.0;
+    let mut worst: f64 = 0.0;
+    let mut cases: Vec<([(f64, f64); 4], f64)> = Vec::new();
+    for (r, sweep_deg, h_frac) in [
+        (10.0, 90.0, 0.9),
+        (40.0, 90.0, 0.5),
+        (120.0, 60.0, 0.9),
+        (400.0, 90.0, 0.3),
+        (1500.0, 45.0, 0.9),
+        (1500.0, 90.0, 0.05),
+    ] {
+        let th: f64 = f64::to_radians(sweep_deg);
+        let k = 4.0 / 3.0 * (th / 4.0).tan();
+        let c = (-1000.0, -1000.0);
+        let (s, e) = ((0.0f64).sin_cos(), th.sin_cos());
+        let p0 = (c.0 + r * s.1, c.1 + r * s.0);
+        let p3 = (c.0 + r * e.1, c.1 + r * e.0);
+        let p1 = (p0.0 - k * r * s.0, p0.1 + k * r * s.1);
+        let p2 = (p3.0 + k * r * e.0, p3.1 - k * r * e.1);
+        cases.push(([p0, p1, p2, p3], h_frac * r));
+    }
+    // An S-curve whose radius of curvature stays above about 60 px.
+    cases.push((
+        [
+            (100.0, 300.0),
+            (300.0, 100.0),
+            (500.0, 500.0),
+            (700.0, 300.0),
+        ],
+        20.0,
+    ));
+    for (ctrl, h) in cases {
+        let cf: Vec<FinePoint> = ctrl.iter().map(|&(x, y)| fine_point(x, y)).collect();
+        let cp: Vec<(f64, f64)> = cf.iter().map(|&q| px(q)).collect();
+        let mut s = Segments::new();
+        {
+            let style = StrokeStyle::new((2.0 * h * 1024.0) as u32);
+            let mut st = Stroker::new(&style, &mut s);
+            st.move_to(cf[0]);
+            st.cubic_to(cf[1], cf[2], cf[3]);
+            st.finish().unwrap();
+        }
+        let segs: Vec<((f64, f64), (f64, f64))> =
+            s.segs.iter().map(|&(a, b)| (px(a), px(b))).collect();
+        let d = |t: f64| {
+            let u = 1.0 - t;
+            let dx = 3.0
+                * (u * u * (cp[1].0 - cp[0].0)
+                    + 2.0 * u * t * (cp[2].0 - cp[1].0)
+                    + t * t * (cp[3].0 - cp[2].0));
+            let dy = 3.0
+                * (u * u * (cp[1].1 - cp[0].1)
+                    + 2.0 * u * t * (cp[2].1 - cp[1].1)
+                    + t * t * (cp[3].1 - cp[2].1));
+            let l = (dx * dx + dy * dy).sqrt();
+            (-dy / l, dx / l)
+        };
+        for i in 1..4000 {
+            let t = f64::from(i) / 4000.0;
+            let (b, n) = (bezier(&cp, t), d(t));
+            for side in [-1.0, 1.0] {
+                let o = (b.0 + side * h * n.0, b.1 + side * h * n.1);
+                let near = segs
+                    .iter()
+                    .map(|&(a, e)| to_segment(o, a, e))
+                    .fold(f64::INFINITY, f64::min);
+                worst = worst.max(near);
+                assert!(
+                    near <= tol_px,
+                    "{ctrl:?} h {h}: offset point {o:?} (t {t}) is {:.2} fine units from the outline",
+                    near * 1024.0
+                );
+            }
+        }
+    }
+    println!("worst {:.2} fine units", worst * 1024.0);
+}

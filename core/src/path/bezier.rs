@@ -224,13 +224,9 @@ pub(crate) fn cubic_tangent(p: &[Pt; 4], k: u32, n: u32) -> Pt {
     v
 }
 
-/// Extra segments so that a stroke's offset of half-width `h` stays
-/// within `tol`: `ceil(T sqrt(h / (8 tol)))` for a total turning `T`
-/// (binary units) of the tangent. On a piece that turns by `a`, an offset
-/// curve of curvature radius `r + h` has chord error `(r + h) a^2 / 8`;
-/// with `n >= T/a_r + T/a_h` steps, `a_r = sqrt(8 tol / r)` and
-/// `a_h = sqrt(8 tol / h)`, that is at most
-/// `tol (r + h) / (sqrt r + sqrt h)^2 <= tol`.
+/// The segments of a curve's stroke ([`offset_count`]'s second count):
+/// `ceil(T sqrt(h / (8 tol)))` for a total turning `T` (binary units) of
+/// the tangent and an offset of half-width `h`.
 pub(crate) fn turn_count(turn: u64, h: i64, tol: i64) -> u32 {
     if turn == 0 || h <= 0 {
         return 0;
@@ -240,6 +236,24 @@ pub(crate) fn turn_count(turn: u64, h: i64, tol: i64) -> u32 {
     let q = (t2 * h as u128).div_ceil(8 * tol.max(1) as u128) >> 62;
     let q = q.min(u128::from(MAX_CURVE_SEGMENTS) * u128::from(MAX_CURVE_SEGMENTS)) as u64;
     ceil_sqrt_u64(q + 1).min(u64::from(MAX_CURVE_SEGMENTS)) as u32
+}
+
+/// Segments so that a stroke's offset edges stay within `tol` of the
+/// offset curve: `ceil(sqrt(n_c^2 + n_t^2))` of the curve's own count
+/// `n_c` ([`cubic_count`], [`quad_count`]) and the turning count `n_t`
+/// ([`turn_count`]). An offset edge joins the offset points at two
+/// vertices, `B + h N` with `N` the unit normal; the chord of a sum is the
+/// sum of the chords, so the offset curve strays from it by at most the
+/// curve's own chord error plus `h` times the normal's, `h a^2 / 8` for a
+/// step that turns by `a`. Both fall as `1 / n^2`: the curve's is within
+/// `tol n_c^2 / n^2` and the normal's within `tol n_t^2 / n^2` (turning
+/// spread over the steps, as `turn_count` takes it), so `n^2 >= n_c^2 +
+/// n_t^2` keeps their sum within `tol`. (For a circular arc of radius
+/// `r` this is the exact condition `(r + h) a^2 / 8 <= tol`; the sum
+/// `n_c + n_t` used before asked for up to `sqrt 2` times as many.)
+pub(crate) fn offset_count(curve: u32, turn: u32) -> u32 {
+    let q = u64::from(curve) * u64::from(curve) + u64::from(turn) * u64::from(turn);
+    (ceil_sqrt_u64(q) as u32).min(MAX_CURVE_SEGMENTS)
 }
 
 #[cfg(test)]

@@ -13,7 +13,7 @@
 //! 1. Each contour is cut into *pieces*: a straight segment gives one
 //!    rectangle; a curve is flattened as in [`bezier`](crate::path::bezier)
 //!    (with extra segments for wide strokes, so that the offset curve is
-//!    within the tolerance too: see `bezier::turn_count`) and each chord gives a
+//!    within the tolerance too: see `bezier::offset_count`) and each chord gives a
 //!    quadrilateral between the curve's true normals at its two vertices.
 //!    Where that quadrilateral would fold (the stroke is wider than the
 //!    curve's radius, or a cusp), the chord's rectangle is used instead and
@@ -75,8 +75,8 @@ pub mod union;
 use crate::geom::{FinePoint, PathSink};
 
 use super::bezier::{
-    cubic_at, cubic_count, cubic_tangent, quad_at, quad_count, quad_tangent, turn_count,
-    MAX_CURVE_SEGMENTS,
+    cubic_at, cubic_count, cubic_tangent, offset_count, quad_at, quad_count, quad_tangent,
+    turn_count,
 };
 use super::segment::{clip_to_square, SegmentSink};
 use super::trig::atan2;
@@ -610,9 +610,10 @@ impl<S: SegmentSink + ?Sized> PathSink for Stroker<'_, '_, S> {
         self.begin_drawing();
         let q = [self.current, Pt::from(c), Pt::from(p)];
         let turn = legs_turning(&[q[1].sub(q[0]), q[2].sub(q[1])]);
-        let n = (quad_count(&q, i64::from(self.tol.fine()))
-            + turn_count(turn, self.half_width(), i64::from(self.tol.fine())))
-        .min(MAX_CURVE_SEGMENTS);
+        let n = offset_count(
+            quad_count(&q, i64::from(self.tol.fine())),
+            turn_count(turn, self.half_width(), i64::from(self.tol.fine())),
+        );
         self.curve(n, |k| quad_at(&q, k, n), |k| quad_tangent(&q, k, n));
         self.current = q[2];
     }
@@ -624,9 +625,10 @@ impl<S: SegmentSink + ?Sized> PathSink for Stroker<'_, '_, S> {
         self.begin_drawing();
         let q = [self.current, Pt::from(c1), Pt::from(c2), Pt::from(p)];
         let turn = legs_turning(&[q[1].sub(q[0]), q[2].sub(q[1]), q[3].sub(q[2])]);
-        let n = (cubic_count(&q, i64::from(self.tol.fine()))
-            + turn_count(turn, self.half_width(), i64::from(self.tol.fine())))
-        .min(MAX_CURVE_SEGMENTS);
+        let n = offset_count(
+            cubic_count(&q, i64::from(self.tol.fine())),
+            turn_count(turn, self.half_width(), i64::from(self.tol.fine())),
+        );
         self.curve(n, |k| cubic_at(&q, k, n), |k| cubic_tangent(&q, k, n));
         self.current = q[3];
     }
