@@ -16,6 +16,8 @@
 //! - [`raster_font`]: fonts rasterized ahead of time, made at run time
 //!   (the code under test's own rasterizer: what the text tests draw, not
 //!   a reference).
+//! - [`screen`]: a display that keeps the pixels and windows it is sent,
+//!   for the renderer's tests.
 //! - [`glyph_ref`]: glyph outlines read by `ttf-parser`, flattened in `f64`
 //!   within 1e-5 px, and their exact area in every pixel: the reference of
 //!   the text tests.
@@ -27,5 +29,6 @@ pub mod glyph_ref;
 pub mod path_ref;
 pub mod raster_font;
 pub mod ratio;
+pub mod screen;
 pub mod shapes;
 pub mod visible;

@@ -10,34 +10,7 @@ use softedge::prelude::*;
 use softedge::style::{Gradient, Offset, Stop};
 use softedge::ShapeKind;
 
-/// A display that keeps what it is sent.
-struct Screen {
-    w: u32,
-    h: u32,
-    px: Vec<Option<Rgb565>>,
-}
-
-impl OriginDimensions for Screen {
-    fn size(&self) -> Size {
-        Size::new(self.w, self.h)
-    }
-}
-
-impl DrawTarget for Screen {
-    type Color = Rgb565;
-    type Error = core::convert::Infallible;
-    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
-        &mut self,
-        px: I,
-    ) -> Result<(), Self::Error> {
-        for Pixel(p, c) in px {
-            if p.x >= 0 && p.y >= 0 && (p.x as u32) < self.w && (p.y as u32) < self.h {
-                self.px[(p.y as u32 * self.w + p.x as u32) as usize] = Some(c);
-            }
-        }
-        Ok(())
-    }
-}
+use softedge_tests::screen::Screen;
 
 const W: u16 = 64;
 const H: u16 = 48;
@@ -52,11 +25,7 @@ where
     let mut cover = vec![0i32; BandBuffer::<3>::cover_len(W, ROWS)];
     let mut slots = [WalkSlot::<3>::EMPTY; 4];
     let mut r = Renderer::new(&mut acc, &mut cover, &mut slots, W, H, ROWS).unwrap();
-    let mut screen = Screen {
-        w: u32::from(W),
-        h: u32::from(H),
-        px: vec![None; usize::from(W) * usize::from(H)],
-    };
+    let mut screen = Screen::<Rgb565>::new(u32::from(W), u32::from(H));
     let format = Rgb565Format::new(Curve::Srgb);
     let report = r
         .render(&mut screen, &format, Rgb565::BLACK, draw)

@@ -10,58 +10,7 @@ use softedge::geom::FinePoint;
 use softedge::path;
 use softedge::prelude::*;
 
-/// A display that keeps what it is sent, and the rectangles sent.
-struct Screen<C> {
-    w: u32,
-    h: u32,
-    px: Vec<Option<C>>,
-    windows: Vec<embedded_graphics::primitives::Rectangle>,
-}
-
-impl<C: PixelColor> Screen<C> {
-    fn new(w: u32, h: u32) -> Self {
-        Self {
-            w,
-            h,
-            px: vec![None; (w * h) as usize],
-            windows: vec![],
-        }
-    }
-    fn at(&self, x: i32, y: i32) -> Option<C> {
-        self.px[(y as u32 * self.w + x as u32) as usize]
-    }
-}
-
-impl<C: PixelColor> OriginDimensions for Screen<C> {
-    fn size(&self) -> Size {
-        Size::new(self.w, self.h)
-    }
-}
-
-impl<C: PixelColor> DrawTarget for Screen<C> {
-    type Color = C;
-    type Error = core::convert::Infallible;
-    fn draw_iter<I: IntoIterator<Item = Pixel<C>>>(
-        &mut self,
-        pixels: I,
-    ) -> Result<(), Self::Error> {
-        for Pixel(p, c) in pixels {
-            if p.x >= 0 && p.y >= 0 && (p.x as u32) < self.w && (p.y as u32) < self.h {
-                self.px[(p.y as u32 * self.w + p.x as u32) as usize] = Some(c);
-            }
-        }
-        Ok(())
-    }
-    fn fill_contiguous<I: IntoIterator<Item = C>>(
-        &mut self,
-        area: &embedded_graphics::primitives::Rectangle,
-        colors: I,
-    ) -> Result<(), Self::Error> {
-        self.windows.push(*area);
-        let pts = area.points();
-        self.draw_iter(pts.zip(colors).map(|(p, c)| Pixel(p, c)))
-    }
-}
+use softedge_tests::screen::Screen;
 
 const W: u16 = 48;
 const H: u16 = 40;

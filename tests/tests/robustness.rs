@@ -7,34 +7,7 @@ use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::{Arc, Circle, Ellipse, Rectangle, RoundedRectangle, Sector};
 use softedge::prelude::*;
 
-/// A display that keeps what it is sent.
-struct Screen {
-    w: u32,
-    h: u32,
-    px: Vec<Option<Rgb565>>,
-}
-
-impl OriginDimensions for Screen {
-    fn size(&self) -> Size {
-        Size::new(self.w, self.h)
-    }
-}
-
-impl DrawTarget for Screen {
-    type Color = Rgb565;
-    type Error = core::convert::Infallible;
-    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
-        &mut self,
-        px: I,
-    ) -> Result<(), Self::Error> {
-        for Pixel(p, c) in px {
-            if p.x >= 0 && p.y >= 0 && (p.x as u32) < self.w && (p.y as u32) < self.h {
-                self.px[(p.y as u32 * self.w + p.x as u32) as usize] = Some(c);
-            }
-        }
-        Ok(())
-    }
-}
+use softedge_tests::screen::Screen;
 
 /// The `w` x `h` frame `draw` gives in bands of `rows`, with its report.
 fn frame<F>(w: u16, h: u16, rows: u16, draw: F) -> (Vec<Option<Rgb565>>, FrameReport)
@@ -45,11 +18,7 @@ where
     let mut cover = vec![0i32; BandBuffer::<3>::cover_len(w, rows)];
     let mut slots = [WalkSlot::<3>::EMPTY; 4];
     let mut r = Renderer::new(&mut acc, &mut cover, &mut slots, w, h, rows).unwrap();
-    let mut screen = Screen {
-        w: u32::from(w),
-        h: u32::from(h),
-        px: vec![None; usize::from(w) * usize::from(h)],
-    };
+    let mut screen = Screen::<Rgb565>::new(u32::from(w), u32::from(h));
     let format = Rgb565Format::new(Curve::Srgb);
     let report = r
         .render(&mut screen, &format, Rgb565::BLACK, draw)
