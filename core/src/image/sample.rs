@@ -241,12 +241,7 @@ impl<F: Fetch, const C: usize> TexelRun<C> for Bilinear<'_, F, C> {
     type Cursor = (i64, i64);
     #[inline(always)]
     fn start(&self, x: i32, y: i32) -> (i64, i64) {
-        let m = &self.map;
-        let at = |k: &[i64; 3]| {
-            k[0].wrapping_add(k[1].wrapping_mul(i64::from(x)))
-                .wrapping_add(k[2].wrapping_mul(i64::from(y)))
-        };
-        (at(&m.u), at(&m.v))
+        self.map.at(x, y)
     }
     // Out of line: one copy of the filter however many operations the
     // run's loop has (a call a pixel, beside some 300 instructions).
@@ -370,12 +365,7 @@ impl<F: Fetch, const C: usize> TexelRun<C> for BoxRun<'_, F, C> {
     /// `u`, `v` of the pixel centre, Q32 texels.
     type Cursor = (i64, i64);
     fn start(&self, x: i32, y: i32) -> (i64, i64) {
-        let m = &self.map;
-        let at = |k: &[i64; 3]| {
-            k[0].wrapping_add(k[1].wrapping_mul(i64::from(x)))
-                .wrapping_add(k[2].wrapping_mul(i64::from(y)))
-        };
-        (at(&m.u), at(&m.v))
+        self.map.at(x, y)
     }
     // Out of line: many texels a pixel, the call is nothing beside them,
     // and the code is not copied into the run's loop.

@@ -257,6 +257,17 @@ impl Mapping {
         })
     }
 
+    /// `(U, V)` of frame pixel `(x, y)`'s centre, Q32 texels (wrapping:
+    /// the samplers clamp what they read).
+    #[inline(always)]
+    pub(crate) fn at(&self, x: i32, y: i32) -> (i64, i64) {
+        let at = |k: &[i64; 3]| {
+            k[0].wrapping_add(k[1].wrapping_mul(i64::from(x)))
+                .wrapping_add(k[2].wrapping_mul(i64::from(y)))
+        };
+        (at(&self.u), at(&self.v))
+    }
+
     /// The image rows the pixels `x0..x1` of rows `y0..y1` can read (with
     /// the filter's reach), clipped to the image.
     pub(crate) fn rows_for(&self, x: (i32, i32), y: (i32, i32)) -> core::ops::Range<i32> {
