@@ -99,9 +99,13 @@ const SMALL_D: i64 = 1 << 15;
 const SMALL_N: i64 = 32;
 
 /// `n / d` rounded, halves away from zero, in 32 bits (`d > 0`): the
-/// value of [`div_round_i64`].
+/// value of [`div_round_i64`]. `d` is taken as at least 1, which its
+/// callers' `n^2`, `n^3` with `n >= 1` are: the optimizer could not always
+/// see it, and kept a division-by-zero panic (the Cortex-M0 no-panic
+/// build found it once the stroker's segment count changed).
 #[inline]
 fn div_round_i32(n: i32, d: i32) -> i32 {
+    let d = d.max(1);
     if n >= 0 {
         (n + d / 2) / d
     } else {
@@ -253,7 +257,7 @@ pub(crate) fn turn_count(turn: u64, h: i64, tol: i64) -> u32 {
 /// `n_c + n_t` used before asked for up to `sqrt 2` times as many.)
 pub(crate) fn offset_count(curve: u32, turn: u32) -> u32 {
     let q = u64::from(curve) * u64::from(curve) + u64::from(turn) * u64::from(turn);
-    (ceil_sqrt_u64(q) as u32).min(MAX_CURVE_SEGMENTS)
+    (ceil_sqrt_u64(q) as u32).clamp(1, MAX_CURVE_SEGMENTS)
 }
 
 #[cfg(test)]
