@@ -234,23 +234,78 @@ impl<F, const C: usize> core::fmt::Debug for Bilinear<'_, F, C> {
     }
 }
 
+/// The alphas of the last 2x2 texels a mask's run read (texel columns
+/// `x`, rows `y`; `-1` before the first), `[a00, a10, a01, a11]`: a
+/// magnified mask takes the same four again, or the right column as its
+/// left one, for most pixels of a run.
+pub(crate) struct Alphas {
+    x: (i32, i32),
+    y: (i32, i32),
+    a: [u32; 4],
+}
+
+impl Alphas {
+    /// The alphas of columns `x`, rows `y` (inside the image), read only
+    /// where the last four do not hold them.
+    #[inline(always)]
+    fn read<F: Fetch>(&mut self, f: &F, x: (i32, i32), y: (i32, i32)) {
+        if self.y == y {
+            if self.x == x {
+                return;
+            }
+            if x.0 == self.x.1 {
+                self.a = [
+                    self.a[1],
+                    f.texel(x.1, y.0).a,
+                    self.a[3],
+                    f.texel(x.1, y.1).a,
+                ];
+                self.x = x;
+                return;
+            }
+        }
+        let (t00, t10) = f.pair(x.0, x.1, y.0);
+        let (t01, t11) = f.pair(x.0, x.1, y.1);
+        self.a = [t00.a, t10.a, t01.a, t11.a];
+        (self.x, self.y) = (x, y);
+    }
+}
+
 impl<F: Fetch, const C: usize> TexelRun<C> for Bilinear<'_, F, C> {
     const OPAQUE: bool = F::OPAQUE && !F::MASK;
     const MASK: bool = F::MASK;
-    /// `u - 1/2`, `v - 1/2` (rounding bias included), Q32 texels.
-    type Cursor = (i64, i64);
+    /// `u - 1/2`, `v - 1/2` (rounding bias included), Q32 texels; a
+    /// mask's last alphas.
+    type Cursor = (i64, i64, Alphas);
     #[inline(always)]
-    fn start(&self, x: i32, y: i32) -> (i64, i64) {
-        self.map.at(x, y)
+    fn start(&self, x: i32, y: i32) -> Self::Cursor {
+        let (u, v) = self.map.at(x, y);
+        let none = Alphas {
+            x: (-1, -1),
+            y: (-1, -1),
+            a: [0; 4],
+        };
+        (u, v, none)
     }
     // Out of line: one copy of the filter however many operations the
     // run's loop has (a call a pixel, beside some 300 instructions).
     #[inline(never)]
-    fn next(&self, cur: &mut (i64, i64)) -> Texel<C> {
-        let (u, v) = *cur;
+    fn next(&self, cur: &mut Self::Cursor) -> Texel<C> {
+        let (u, v) = (cur.0, cur.1);
         cur.0 = u.wrapping_add(self.map.u[1]);
         cur.1 = v.wrapping_add(self.map.v[1]);
-        bilinear::<F, C>(self.fetch, self.map.width, self.map.height, u, v)
+        let (w, h) = (self.map.width, self.map.height);
+        let (x, y) = (pair((u >> 32) as i32, w), pair((v >> 32) as i32, h));
+        if F::MASK {
+            cur.2.read(self.fetch, x, y);
+            let [a00, a10, a01, a11] = cur.2.a;
+            let alpha = Weights::at(u, v).mix(a00, a10, a01, a11) >> ALPHA_SHIFT;
+            return Texel {
+                color: [0; C],
+                alpha: alpha as i32,
+            };
+        }
+        bilinear::<F, C>(self.fetch, x, y, u, v)
     }
     fn tint(&self) -> [i32; C] {
         self.tint
@@ -267,33 +322,57 @@ fn pair(i: i32, n: i32) -> (i32, i32) {
     }
 }
 
-/// The bilinear sample at `(u, v)` (texel-centre coordinates, Q32).
-#[inline(always)]
-fn bilinear<F: Fetch, const C: usize>(f: &F, w: i32, h: i32, u: i64, v: i64) -> Texel<C> {
-    let fu = (u as u32) >> (32 - ALPHA_BITS);
-    let fv = (v as u32) >> (32 - ALPHA_BITS);
-    let (x0, x1) = pair((u >> 32) as i32, w);
-    let (y0, y1) = pair((v >> 32) as i32, h);
-    let (t00, t10) = f.pair(x0, x1, y0);
-    let (t01, t11) = f.pair(x0, x1, y1);
-    // Weights in 2^-20, summing to 2^20.
-    let w11 = fu * fv;
-    let w10 = (fu << ALPHA_BITS) - w11;
-    let w01 = (fv << ALPHA_BITS) - w11;
-    let w00 = (1u32 << (2 * ALPHA_BITS))
-        .wrapping_sub(fu << ALPHA_BITS)
-        .wrapping_sub(fv << ALPHA_BITS)
-        .wrapping_add(w11);
-    let mix = |a: u32, b: u32, c: u32, d: u32| {
+/// A bilinear sum's alpha to coverage units.
+const ALPHA_SHIFT: u32 = 2 * ALPHA_BITS - (COVER_BITS - ALPHA_BITS);
+
+/// The four bilinear weights at `(u, v)` (texel-centre coordinates,
+/// Q32): products of the 10-bit fractions, in 2^-20, summing to 2^20.
+struct Weights([u32; 4]);
+
+impl Weights {
+    #[inline(always)]
+    fn at(u: i64, v: i64) -> Self {
+        let fu = (u as u32) >> (32 - ALPHA_BITS);
+        let fv = (v as u32) >> (32 - ALPHA_BITS);
+        let w11 = fu * fv;
+        let w10 = (fu << ALPHA_BITS) - w11;
+        let w01 = (fv << ALPHA_BITS) - w11;
+        let w00 = (1u32 << (2 * ALPHA_BITS))
+            .wrapping_sub(fu << ALPHA_BITS)
+            .wrapping_sub(fv << ALPHA_BITS)
+            .wrapping_add(w11);
+        Weights([w00, w10, w01, w11])
+    }
+
+    /// `a w00 + b w10 + c w01 + d w11`.
+    #[inline(always)]
+    fn mix(&self, a: u32, b: u32, c: u32, d: u32) -> u32 {
+        let [w00, w10, w01, w11] = self.0;
         a.wrapping_mul(w00)
             .wrapping_add(b.wrapping_mul(w10))
             .wrapping_add(c.wrapping_mul(w01))
             .wrapping_add(d.wrapping_mul(w11))
-    };
+    }
+}
+
+/// The bilinear sample at `(u, v)` (texel-centre coordinates, Q32) of
+/// the texels in columns `x`, rows `y` around it.
+#[inline(always)]
+fn bilinear<F: Fetch, const C: usize>(
+    f: &F,
+    (x0, x1): (i32, i32),
+    (y0, y1): (i32, i32),
+    u: i64,
+    v: i64,
+) -> Texel<C> {
+    let (t00, t10) = f.pair(x0, x1, y0);
+    let (t01, t11) = f.pair(x0, x1, y1);
+    let wt = Weights::at(u, v);
+    let mix = |a: u32, b: u32, c: u32, d: u32| wt.mix(a, b, c, d);
     let alpha = if F::OPAQUE && !F::MASK {
         COVER_ONE
     } else {
-        (mix(t00.a, t10.a, t01.a, t11.a) >> (2 * ALPHA_BITS - (COVER_BITS - ALPHA_BITS))) as i32
+        (mix(t00.a, t10.a, t01.a, t11.a) >> ALPHA_SHIFT) as i32
     };
     if F::MASK {
         return Texel {
