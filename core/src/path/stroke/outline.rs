@@ -201,10 +201,10 @@ pub(crate) struct Outline<'s, S: SegmentSink + ?Sized> {
     /// What is being sent belongs to a quiet piece: only its numbers go
     /// to the sink (see [`Piece::quiet`]).
     quiet: bool,
-    /// Per reach `h_q1` of a side (none yet: `-1`), the bound `P` of
-    /// [`Outline::one_chord`]: a round join whose turn has
+    /// For the `m` side's reach and the `p` side's, the bound `P` of
+    /// [`Outline::one_chord`] once found: a round join whose turn has
     /// `cross 2^31 <= P dot` is one chord.
-    one_chord: [(i64, u64); 2],
+    one_chord: [Option<u64>; 2],
 }
 
 /// A lower bound of pi: `PI_LO / PI_DEN`.
@@ -235,7 +235,7 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
             held: None,
             run_holds: false,
             quiet: false,
-            one_chord: [(-1, 0); 2],
+            one_chord: [None; 2],
         }
     }
 
@@ -252,19 +252,20 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
         if dot <= 0 || cross < 0 {
             return false;
         }
-        let slot = usize::from(self.one_chord[0].0 != h_q1 && self.one_chord[0].0 >= 0);
+        // `wedge` is given one side's reach or the other's.
+        let slot = usize::from(h_q1 != self.sides.m);
+        let tol = self.tol;
         let Some(entry) = self.one_chord.get_mut(slot) else {
             return false;
         };
-        if entry.0 != h_q1 {
+        let p = *entry.get_or_insert_with(|| {
             // The arc's radius as `wedge` gives it to `arc`.
             let frame = EllipseFrame::with_q8(Pt::new(0, 0), h_q1 << 7, h_q1 << 7, UNIT_X);
-            let s = one_segment_sweep(frame.major(), self.tol) - ATAN2_SLACK;
-            let p = (s.max(0) as u64 * PI_LO) / PI_DEN;
-            *entry = (h_q1, p);
-        }
+            let s = one_segment_sweep(frame.major(), tol) - ATAN2_SLACK;
+            (s.max(0) as u64 * PI_LO) / PI_DEN
+        });
         // cross, dot < 2^31 and P < 2^31: both products below 2^62.
-        (cross as u64) << 31 <= entry.1.saturating_mul(dot as u64)
+        (cross as u64) << 31 <= p.saturating_mul(dot as u64)
     }
 
     /// The rows the sink needs ([`SegmentSink::window`]).
