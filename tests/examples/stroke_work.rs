@@ -1,8 +1,9 @@
 //! Issue #36, G3: the issue's dashed strokes rendered through the
 //! Renderer in 1-row bands, for measuring with callgrind:
 //! `valgrind --tool=callgrind target/release/examples/stroke_work a [row]`
-//! (`a` to `i`, the cases below: the frame in 1-row bands; with `row`, only that
-//! band, through `render_window`). Prints the frame's report.
+//! (`a` to `m`, the cases below: the frame in 1-row bands; with `row`, only that
+//! band, through `render_window`; a third argument sets the frame's width).
+//! Prints the frame's report.
 
 use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::*;
@@ -40,6 +41,8 @@ fn main() {
         "h" => (5, 32),
         _ => (16, 16),
     };
+    // A third argument: the frame's width instead (a display's, 240).
+    let w = args.get(3).and_then(|w| w.parse().ok()).unwrap_or(w);
     let fine = [3u32];
     let dots = [144u32, 0, 0];
     let long = [64u32];
@@ -58,6 +61,36 @@ fn main() {
         .map(|i| FinePoint::new((i % 2) * 3 * 1024, i * 40))
         .collect();
     let zigzag = softedge::path::Polyline::new(&zig);
+    let wide: Vec<FinePoint> = (0..250)
+        .map(|i| FinePoint::new((i % 2) * 9 * 1024, i * 8 * 1024))
+        .collect();
+    let wide_zig = softedge::path::Polyline::new(&wide);
+    let mut curves_d = String::from("M -2000 -2000");
+    for k in 0.. {
+        let s = if k % 2 == 0 { 1 } else { -1 };
+        let c = format!(
+            " C {} -1900 {} 1900 {} {}",
+            2000 * s,
+            -2000 * s,
+            1990 * s,
+            1990 - k * 90
+        );
+        if curves_d.len() + c.len() > 1024 {
+            break;
+        }
+        curves_d += &c;
+    }
+    let curves = SvgPath::new(&curves_d).unwrap();
+    let mut stairs_d = String::from("M8 8");
+    while stairs_d.len() + 4 <= 1024 {
+        stairs_d += "h1v1";
+    }
+    let stairs = SvgPath::new(&stairs_d).unwrap();
+    let mut loops_d = String::from("M8 8");
+    while loops_d.len() + 16 <= 1024 {
+        loops_d += "c1 -1 -1 -1 0 1";
+    }
+    let loops = SvgPath::new(&loops_d).unwrap();
     let draw = |c: &mut Canvas<'_, '_, 3, Rgb565>| -> Result<(), DrawError> {
         match which {
             "a" => {
@@ -83,6 +116,33 @@ fn main() {
                 let big =
                     softedge::path::Ellipse::new(FinePoint::new(0, 0), 2000 * 1024, 1900 * 1024);
                 let _ = c.stroke_shape(&big, &s, [4095; 3], Blend::Over, Opacity::OPAQUE);
+            }
+            "j" => {
+                // A 1 KiB scene's worth of polyline (250 points), round
+                // joins, stroked 4 096 px wide: every join's arc crosses
+                // the band.
+                let s = StrokeStyle::new(4096 * 1024).with_join(LineJoin::Round);
+                let _ = c.stroke_shape(&wide_zig, &s, [4095; 3], Blend::Over, Opacity::OPAQUE);
+            }
+            "k" => {
+                // 1 KiB of SVG: 28 cubic curves across the range, stroked
+                // 4 096 px wide with round joins.
+                let s = StrokeStyle::new(4096 * 1024).with_join(LineJoin::Round);
+                let _ = c.stroke_shape(&curves, &s, [4095; 3], Blend::Over, Opacity::OPAQUE);
+            }
+            "l" => {
+                // 1 KiB of SVG: 512 drawing commands (`h1v1...`), round
+                // joins and caps, 4 096 px wide.
+                let s = StrokeStyle::new(4096 * 1024)
+                    .with_join(LineJoin::Round)
+                    .with_cap(LineCap::Round);
+                let _ = c.stroke_shape(&stairs, &s, [4095; 3], Blend::Over, Opacity::OPAQUE);
+            }
+            "m" => {
+                // 1 KiB of SVG: 60 tiny cubic loops stroked 1 000 px wide
+                // (every chord of them a rectangle, every join round).
+                let s = StrokeStyle::new(1000 * 1024).with_join(LineJoin::Round);
+                let _ = c.stroke_shape(&loops, &s, [4095; 3], Blend::Over, Opacity::OPAQUE);
             }
             "h" => {
                 // The renderer fuzz target's slow input: an 8x25-px

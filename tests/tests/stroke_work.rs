@@ -247,3 +247,67 @@ fn quiet_miter_joins_keep_their_numbers() {
         }
     }
 }
+
+/// Issue #36's bound for solid strokes: the widest descriptions of at most
+/// 1 KiB found (a 2000-px ellipse stroked 4 096 px wide; 250 points of
+/// zigzag with round joins; 28 curves across the range; 512 `h1v1`
+/// commands with round joins and caps; tiny loops stroked 1 000 px wide),
+/// built at the tolerance fitted to the budget (`path::stroke::budget`):
+/// drawn whole, the same segments with the same numbers in every band,
+/// and at most the stroker's limit for 512 drawing commands,
+/// `2 * MAX_STROKE_WORK + 16 * 512` units, sent to a band. (They sent
+/// 20 892 to 1 387 580 segments a band before; callgrind per band in
+/// `tests/examples/stroke_work.rs`, cases `i` to `m`.)
+#[test]
+fn the_widest_solid_strokes_are_fitted_within_the_limit() {
+    use softedge::path::{LineJoin, MAX_STROKE_WORK};
+    let limit = u64::from(2 * MAX_STROKE_WORK + 16 * 512);
+    let wide = StrokeStyle::new(4096 * 1024);
+    let round = wide.with_join(LineJoin::Round);
+    let ellipse = softedge::path::Ellipse::new(FinePoint::new(0, 0), 2000 * 1024, 1900 * 1024);
+    let (most, r) = check_bands("ellipse", &ellipse, &wide, 16);
+    assert_eq!(r, Ok(()));
+    assert!(most <= limit, "{most}");
+    let zig: Vec<FinePoint> = (0..250)
+        .map(|i| FinePoint::new((i % 2) * 9 * 1024, i * 8 * 1024))
+        .collect();
+    let (most, r) = check_bands("zigzag", &softedge::path::Polyline::new(&zig), &round, 16);
+    assert_eq!(r, Ok(()));
+    assert!(most <= limit, "{most}");
+    let mut curves = String::from("M -2000 -2000");
+    for k in 0.. {
+        let s = if k % 2 == 0 { 1 } else { -1 };
+        let c = format!(
+            " C {} -1900 {} 1900 {} {}",
+            2000 * s,
+            -2000 * s,
+            1990 * s,
+            1990 - k * 90
+        );
+        if curves.len() + c.len() > 1024 {
+            break;
+        }
+        curves += &c;
+    }
+    let mut stairs = String::from("M8 8");
+    while stairs.len() + 4 <= 1024 {
+        stairs += "h1v1";
+    }
+    let mut loops = String::from("M8 8");
+    while loops.len() + 16 <= 1024 {
+        loops += "c1 -1 -1 -1 0 1";
+    }
+    let capped = round.with_cap(LineCap::Round);
+    let thick = StrokeStyle::new(1000 * 1024).with_join(LineJoin::Round);
+    for (name, d, style) in [
+        ("curves", &curves, &round),
+        ("stairs", &stairs, &capped),
+        ("loops", &loops, &thick),
+    ] {
+        assert!(d.len() <= 1024);
+        let path = SvgPath::new(d).unwrap();
+        let (most, r) = check_bands(name, &path, style, 16);
+        assert_eq!(r, Ok(()), "{name}");
+        assert!(most <= limit, "{name}: {most}");
+    }
+}

@@ -225,7 +225,8 @@ mod tests {
     use crate::canvas::Canvas;
     use crate::path::testing::Lcg;
     use crate::path::{
-        Arc, Circle, CornerRadii, Degrees, Ellipse, LineCap, Rectangle, RoundedRectangle, Sector,
+        Arc, Circle, CornerRadii, Degrees, Ellipse, LineCap, LineJoin, Rectangle, RoundedRectangle,
+        Sector,
     };
 
     /// Checks that every point a sink receives lies in a box.
@@ -249,12 +250,30 @@ mod tests {
             shape.fill_with(tol, &mut k);
             assert_eq!(k.1, 0, "case {case}: a fill point outside the bounds");
         }
+        // The shape's own stroke; and the stroker's at the coarser
+        // tolerances a stroke past its work budget is built with
+        // (`path::stroke::budget`), whose round parts stand out more.
+        let coarse = crate::path::stroke::budget::COARSEST;
+        let tols = [Tolerance::coarse(768), Tolerance::coarse(coarse)];
         for cap in [LineCap::Butt, LineCap::Round, LineCap::Square] {
-            let style = StrokeStyle::new(300 + case * 37 % 4000).with_cap(cap);
+            let join = [LineJoin::Miter, LineJoin::Round, LineJoin::Bevel][case as usize % 3];
+            let style = StrokeStyle::new(300 + case * 37 % 4000)
+                .with_cap(cap)
+                .with_join(join);
             if let Some(b) = Stroked::<S>::widen(shape_bounds(shape), &style) {
                 let mut k = Inside(b, 0);
                 let _ = shape.stroke_with(&style, tol, &mut k);
                 assert_eq!(k.1, 0, "case {case}: a stroke point outside the bounds");
+                for t in tols {
+                    let mut k = Inside(b, 0);
+                    let mut st = crate::path::Stroker::with_tolerance(&style, t, &mut k);
+                    shape.describe(&mut st);
+                    let _ = st.finish();
+                    assert_eq!(
+                        k.1, 0,
+                        "case {case} {t:?}: a stroke point outside the bounds"
+                    );
+                }
             }
         }
     }
@@ -282,6 +301,12 @@ mod tests {
                 &RoundedRectangle::new(rect, CornerRadii::uniform(r.min(r2) / 2)),
                 case,
             );
+            let pts = [
+                c,
+                FinePoint::new(c.x + r as i32, c.y),
+                FinePoint::new(c.x, c.y + r2 as i32),
+            ];
+            check(&crate::path::Polyline::new(&pts), case);
         }
     }
 

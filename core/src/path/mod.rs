@@ -84,7 +84,12 @@
 //! (2048) per circle or ellipse, [`MAX_ARC_SEGMENTS`] (2048) per arc,
 //! [`MAX_DASH_INTERVALS`] (65536) dash intervals per contour,
 //! [`MAX_STROKE_WORK`] (16384) segments of dashes per stroke as charged
-//! (whether a band builds them or steps over them), a few dozen
+//! (whether a band builds them or steps over them); a solid stroke is
+//! built at the finest tolerance (up to 4 096 times the one asked for,
+//! 12 px) whose work, counted from its description, is within that budget,
+//! and stops past twice it and 16 units a drawing command
+//! ([`StrokeError::TooComplex`]; the units and the measured bound per
+//! band are in `stroke/budget.rs`); a few dozen
 //! steps per square root, angle or number. Radii are limited to
 //! [`MAX_RADIUS`] (8192 px), stroke widths to [`MAX_STROKE_WIDTH`] (4096
 //! px). Typical counts at the default tolerance: a circle of radius 1/2
@@ -180,6 +185,17 @@ impl Tolerance {
             Self::MIN
         } else if fine > Self::MAX.0 {
             Self::MAX
+        } else {
+            Tolerance(fine)
+        }
+    }
+
+    /// A tolerance of `fine` units, at least 1 and not limited above: the
+    /// stroker's own coarser tolerances for strokes past their budget
+    /// (`stroke::budget`).
+    pub(crate) const fn coarse(fine: u16) -> Self {
+        if fine < Self::MIN.0 {
+            Self::MIN
         } else {
             Tolerance(fine)
         }

@@ -77,9 +77,7 @@ impl Shape for Circle {
         sink: &mut S,
     ) -> Result<(), StrokeError> {
         if needs_stroker(style) {
-            let mut s = crate::path::Stroker::with_tolerance(style, tol, sink);
-            self.describe(&mut s);
-            return s.finish();
+            return crate::path::stroke::stroke_described(self, style, tol, sink);
         }
         if self.radius == 0 || style.width == 0 {
             return Ok(());

@@ -90,9 +90,7 @@ impl Shape for Ellipse {
         tol: Tolerance,
         sink: &mut S,
     ) -> Result<(), StrokeError> {
-        let mut s = crate::path::Stroker::with_tolerance(style, tol, sink);
-        self.describe(&mut s);
-        s.finish()
+        crate::path::stroke::stroke_described(self, style, tol, sink)
     }
 }
 

@@ -54,7 +54,7 @@ use crate::geom::PathSink;
 
 use super::arc::{ellipse_points, EllipseFrame};
 use super::segment::{ContourVertices, SegmentSink, Vertices};
-use super::{Degrees, Flattener, StrokeError, StrokeStyle, Stroker, Tolerance};
+use super::{Degrees, Flattener, StrokeError, StrokeStyle, Tolerance};
 
 /// A shape that can describe its outline, fill itself and stroke itself.
 ///
@@ -97,16 +97,20 @@ pub trait Shape {
         self.fill_with(Tolerance::DEFAULT, sink);
     }
 
-    /// Strokes the shape's outline within `tol`.
+    /// Strokes the shape's outline within `tol`; where it goes through
+    /// the [`Stroker`](crate::path::Stroker) and would build more than
+    /// [`MAX_STROKE_WORK`](crate::path::MAX_STROKE_WORK) units of work
+    /// (strokes thousands of pixels wide, or of curves across the whole
+    /// range), within the finest of `4 tol`, `16 tol`, ... (at most 12 px)
+    /// that keeps it there (`path::stroke::budget`), the same in every
+    /// band.
     fn stroke_with<S: SegmentSink + ?Sized>(
         &self,
         style: &StrokeStyle<'_>,
         tol: Tolerance,
         sink: &mut S,
     ) -> Result<(), StrokeError> {
-        let mut s = Stroker::with_tolerance(style, tol, sink);
-        self.describe(&mut s);
-        s.finish()
+        super::stroke::stroke_described(self, style, tol, sink)
     }
 
     /// Strokes the shape's outline with the default tolerance.

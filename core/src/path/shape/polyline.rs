@@ -68,7 +68,11 @@ impl<P: Copy + Into<FinePoint>> Shape for Polyline<'_, P> {
         tol: Tolerance,
         sink: &mut S,
     ) -> Result<(), StrokeError> {
-        let r = centred_stroke(self, style, tol, sink);
+        // Fitted to the work budget once, for the stroke and its union.
+        let tol = fitted(self, style, tol, self.vertices.len());
+        // An error (stopped past its work limit, which a polyline fitted
+        // to the budget never reaches): no union for pieces not drawn.
+        centred_stroke(self, style, tol, sink)?;
         // Where the stroke overlaps itself: the union, not the sum.
         let t = self.translate;
         let points = self.vertices.iter().map(|&p| {
@@ -76,11 +80,29 @@ impl<P: Copy + Into<FinePoint>> Shape for Polyline<'_, P> {
             FinePoint::new(p.x.saturating_add(t.x), p.y.saturating_add(t.y)).into()
         });
         crate::path::stroke::union::polyline_union(points, style, tol, sink);
-        r
+        Ok(())
     }
 }
 
-/// Strokes an open shape, centred whatever the style's alignment.
+/// The tolerance for a stroke of `shape`, `commands` straight drawing
+/// commands, within its work budget (`stroke::budget`): `tol` without a
+/// pass over its points where so few are plainly within it.
+fn fitted<T: Shape + ?Sized>(
+    shape: &T,
+    style: &StrokeStyle<'_>,
+    tol: Tolerance,
+    commands: usize,
+) -> Tolerance {
+    use crate::path::stroke::budget;
+    if budget::plainly_within(style, tol, commands) {
+        tol
+    } else {
+        budget::fitted(shape, style, tol)
+    }
+}
+
+/// Strokes an open shape, centred whatever the style's alignment, within
+/// `tol` (already fitted to the work budget: `stroke::budget`).
 fn centred_stroke<T: Shape + ?Sized, S: SegmentSink + ?Sized>(
     shape: &T,
     style: &StrokeStyle<'_>,
@@ -137,6 +159,7 @@ impl Shape for Line {
         tol: Tolerance,
         sink: &mut S,
     ) -> Result<(), StrokeError> {
+        let tol = fitted(self, style, tol, 1);
         centred_stroke(self, style, tol, sink)
     }
 }
@@ -239,6 +262,18 @@ impl<P: Copy + Into<FinePoint>> Shape for Polygon<'_, P> {
             (0..n).rev().for_each(|k| emit(k, k == n - 1));
         }
         sink.close();
+    }
+
+    fn stroke_with<S: SegmentSink + ?Sized>(
+        &self,
+        style: &StrokeStyle<'_>,
+        tol: Tolerance,
+        sink: &mut S,
+    ) -> Result<(), StrokeError> {
+        let tol = fitted(self, style, tol, self.vertices.len() + 1);
+        let mut s = Stroker::with_tolerance(style, tol, sink);
+        self.describe(&mut s);
+        s.finish()
     }
 }
 

@@ -436,9 +436,7 @@ impl Shape for RoundedRectangle {
         sink: &mut S,
     ) -> Result<(), StrokeError> {
         if needs_stroker(style) {
-            let mut st = crate::path::Stroker::with_tolerance(style, tol, sink);
-            self.describe(&mut st);
-            return st.finish();
+            return crate::path::stroke::stroke_described(self, style, tol, sink);
         }
         if self.rect.is_empty() || style.width == 0 {
             return Ok(());

@@ -99,9 +99,7 @@ impl Shape for Arc {
         let capped = style.cap != LineCap::Butt;
         let ring_caps = out_q1 == in_q1 && r_q8 > in_q1 << 7;
         if needs_stroker(style) || (capped && !ring_caps) {
-            let mut st = crate::path::Stroker::with_tolerance(style, tol, sink);
-            self.describe(&mut st);
-            return st.finish();
+            return crate::path::stroke::stroke_described(self, style, tol, sink);
         }
         if self.radius == 0 || s == 0 || style.width == 0 {
             return Ok(());
@@ -261,9 +259,7 @@ impl Shape for Sector {
             return super::Circle::new(self.centre, self.radius).stroke_with(style, tol, sink);
         }
         if needs_stroker(style) || (s > HALF_TURN && out_q1 > 0) {
-            let mut st = crate::path::Stroker::with_tolerance(style, tol, sink);
-            self.describe(&mut st);
-            return st.finish();
+            return crate::path::stroke::stroke_described(self, style, tol, sink);
         }
         if self.radius == 0 || s == 0 || style.width == 0 {
             return Ok(());

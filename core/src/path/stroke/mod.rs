@@ -57,7 +57,10 @@
 //! tolerance; joins and caps are area-preserving arcs ([`arc`](crate::path::arc)).
 //! So the stroke outline is within `tol + 0.71` fine units of the exact
 //! one for straight paths, and for curves wherever the stroke is
-//! narrower than twice the radius of curvature.
+//! narrower than twice the radius of curvature. A shape's stroke that
+//! would cost more than its work budget is built at a coarser `tol`
+//! ([`budget`]: only strokes thousands of pixels wide or curves across
+//! the whole range come near it).
 //!
 //! ## Alignment
 //!
@@ -68,6 +71,7 @@
 //! Alignment applies to any contour; embedded-graphics applies it to
 //! closed shapes (and arcs) only, and the conversions follow that.
 
+pub(crate) mod budget;
 pub mod dash;
 pub mod outline;
 pub mod union;
@@ -239,8 +243,12 @@ pub enum StrokeError {
     TooManyDashes,
     /// The stroke's dashes would build more than [`MAX_STROKE_WORK`]
     /// segments (each dash charged its caps and body, whether or not it
-    /// meets the band being drawn, so every band stops at the same dash);
-    /// the rest of the stroke was not stroked.
+    /// meets the band being drawn, so every band stops at the same dash),
+    /// or a solid stroke built more than twice that and 16 a drawing
+    /// command (`stroke::budget`: a shape's stroke is first fitted to the
+    /// budget with a coarser tolerance, so this takes a description the
+    /// fitting could not bring within it); the rest of the stroke was not
+    /// stroked.
     TooComplex,
 }
 
@@ -253,7 +261,7 @@ impl core::fmt::Display for StrokeError {
             ),
             StrokeError::TooComplex => write!(
                 f,
-                "stroke too complex: its dashes would build more than {MAX_STROKE_WORK} segments"
+                "stroke too complex: more than its budget of {MAX_STROKE_WORK} segments of dashes, or of twice that and 16 a drawing command"
             ),
         }
     }
@@ -369,6 +377,13 @@ impl<'d> StrokeStyle<'d> {
 
 /// Strokes a path: a [`PathSink`] whose output is the stroke's outline.
 ///
+/// It counts its work as it goes (segments sent or left out, and the
+/// set-ups of pieces and arcs) and stops a solid stroke past twice
+/// [`MAX_STROKE_WORK`] and 16 units a drawing command
+/// ([`StrokeError::TooComplex`] from [`finish`](Self::finish)); a shape's
+/// [`stroke_with`](crate::path::Shape::stroke_with) first fits its
+/// tolerance so that it stays within [`MAX_STROKE_WORK`].
+///
 /// ```
 /// use softedge::geom::{FinePoint, PathSink};
 /// use softedge::path::{LineCap, SegmentSink, StrokeStyle, Stroker};
@@ -406,6 +421,13 @@ pub struct Stroker<'s, 'd, S: SegmentSink + ?Sized> {
     empty: bool,
     /// How far the stroke reaches from its path (caps, joins), fine units.
     reach: i64,
+    /// The work a solid stroke may do ([`budget::limit`] of its drawing
+    /// commands so far), and whether it went past it (the rest is not
+    /// stroked).
+    limit: u32,
+    too_complex: bool,
+    /// No dashes.
+    solid: bool,
 }
 
 impl<'s, 'd, S: SegmentSink + ?Sized> Stroker<'s, 'd, S> {
@@ -424,9 +446,11 @@ impl<'s, 'd, S: SegmentSink + ?Sized> Stroker<'s, 'd, S> {
         // reach at most the style's reach beyond its path.
         let dash_cost = 2 * outline.cap_cost() + 4;
         let reach = style.reach();
+        let dasher = style.dash.and_then(|d| Dasher::new(d, dash_cost, reach));
         Self {
             outline,
-            dasher: style.dash.and_then(|d| Dasher::new(d, dash_cost, reach)),
+            solid: dasher.is_none(),
+            dasher,
             sides,
             tol,
             start: Pt::default(),
@@ -436,6 +460,8 @@ impl<'s, 'd, S: SegmentSink + ?Sized> Stroker<'s, 'd, S> {
             pieced: false,
             empty: sides.width() == 0,
             reach,
+            limit: budget::limit(0),
+            too_complex: false,
         }
     }
 
@@ -446,6 +472,7 @@ impl<'s, 'd, S: SegmentSink + ?Sized> Stroker<'s, 'd, S> {
         self.end_contour(false);
         match self.dasher.as_ref().and_then(Dasher::error) {
             Some(e) => Err(e),
+            None if self.too_complex => Err(StrokeError::TooComplex),
             None => Ok(()),
         }
     }
@@ -460,7 +487,7 @@ impl<'s, 'd, S: SegmentSink + ?Sized> Stroker<'s, 'd, S> {
                 Some(d) => d.end_contour(closed, &mut self.outline),
                 None => self.outline.end_contour(closed),
             }
-        } else if self.drawn {
+        } else if self.drawn && !self.too_complex {
             let show = self.dasher.as_mut().is_none_or(Dasher::starts_on);
             if show {
                 self.outline.dot(self.start);
@@ -471,6 +498,7 @@ impl<'s, 'd, S: SegmentSink + ?Sized> Stroker<'s, 'd, S> {
     }
 
     fn begin_drawing(&mut self) {
+        self.limit = self.limit.saturating_add(budget::WORK_PER_COMMAND);
         if !self.open {
             // A drawing command without move_to: a contour from the last
             // point (after `close`, the closed contour's start).
@@ -496,8 +524,22 @@ impl<'s, 'd, S: SegmentSink + ?Sized> Stroker<'s, 'd, S> {
         }
     }
 
+    /// True when a solid stroke has done more work than a description of
+    /// its drawing commands so far may cost ([`budget::limit`]; dashes
+    /// have their own budget): the rest is not stroked.
+    #[inline(always)]
+    fn stopped(&mut self) -> bool {
+        if !self.too_complex && self.solid {
+            self.too_complex = self.outline.work() > self.limit;
+        }
+        self.too_complex
+    }
+
     /// A straight segment, clipped to the stroke box.
     fn straight(&mut self, a: Pt, b: Pt, join: JoinKind) {
+        if self.stopped() {
+            return;
+        }
         let inside = |p: Pt| p.x.abs() <= STROKE_BOX && p.y.abs() <= STROKE_BOX;
         if inside(a) && inside(b) {
             if let Some(p) = Piece::straight(a, b, self.sides) {
@@ -521,6 +563,9 @@ impl<'s, 'd, S: SegmentSink + ?Sized> Stroker<'s, 'd, S> {
         let mut prev_t = tangent(0).unit();
         let mut join = JoinKind::Path;
         for k in 1..=n {
+            if self.stopped() {
+                return;
+            }
             let v = at(k);
             let t = tangent(k).unit();
             if v == prev {
@@ -561,6 +606,26 @@ impl<'s, 'd, S: SegmentSink + ?Sized> Stroker<'s, 'd, S> {
     fn half_width(&self) -> i64 {
         self.sides.m.max(self.sides.p) / 2
     }
+}
+
+/// Strokes `shape`'s description with `style` within `tol`, or within the
+/// coarser tolerance that keeps the stroke within its work budget
+/// ([`budget`]): what [`Shape::stroke_with`](crate::path::Shape::stroke_with)
+/// does wherever it goes through the [`Stroker`].
+pub(crate) fn stroke_described<T, S>(
+    shape: &T,
+    style: &StrokeStyle<'_>,
+    tol: Tolerance,
+    sink: &mut S,
+) -> Result<(), StrokeError>
+where
+    T: crate::path::Shape + ?Sized,
+    S: SegmentSink + ?Sized,
+{
+    let tol = budget::fitted(shape, style, tol);
+    let mut s = Stroker::with_tolerance(style, tol, sink);
+    shape.describe(&mut s);
+    s.finish()
 }
 
 /// The total turning of a control polygon's legs, binary units: the sum
@@ -639,6 +704,7 @@ impl<S: SegmentSink + ?Sized> PathSink for Stroker<'_, '_, S> {
             return;
         }
         self.drawn = true;
+        self.limit = self.limit.saturating_add(budget::WORK_PER_COMMAND);
         if self.current != self.start {
             self.straight(self.current, self.start, JoinKind::Path);
         }

@@ -183,7 +183,7 @@ pub(crate) enum JoinKind {
 
 /// Builds the outline of runs of pieces (see the module doc).
 pub(crate) struct Outline<'s, S: SegmentSink + ?Sized> {
-    sink: &'s mut S,
+    sink: Counted<'s, S>,
     join: LineJoin,
     miter_limit: MiterLimit,
     cap: LineCap,
@@ -224,7 +224,7 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
         tol: Tolerance,
     ) -> Self {
         Self {
-            sink,
+            sink: Counted { sink, work: 0 },
             join,
             miter_limit,
             cap,
@@ -295,12 +295,24 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
         self.cap != LineCap::Butt
     }
 
+    /// The work done so far, in segments' worth: the numbers given to the
+    /// sink (segments sent and left out) and the set-ups of the pieces
+    /// and arcs (`budget`'s units, counted as they are spent).
+    pub fn work(&self) -> u32 {
+        self.sink.work
+    }
+
+    /// Counts a set-up's work.
+    fn set_up(&mut self, units: u64) {
+        self.sink.work = self.sink.work.wrapping_add(units as u32);
+    }
+
     /// `a -> b` to the sink, or, quiet, only its numbers.
     fn seg(&mut self, a: Pt, b: Pt) {
         if self.quiet {
             self.sink.skipped(numbers(a, b));
         } else {
-            emit(self.sink, a, b);
+            emit(&mut self.sink, a, b);
         }
     }
 
@@ -316,6 +328,7 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
     /// The next piece of the current run, joined to the previous one by
     /// `join` (ignored for a run's first piece).
     pub fn piece(&mut self, mut p: Piece, join: JoinKind) {
+        self.set_up(super::budget::PIECE_SETUP);
         match self.pending.take() {
             None => {
                 if self.run_holds && self.held.is_none() {
@@ -385,7 +398,8 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
                     w_q1 << 6,
                     UNIT_X,
                 );
-                let mut out = Contour::new(self.sink);
+                self.set_up(ARC_SETUP);
+                let mut out = Contour::new(&mut self.sink);
                 let mut first = true;
                 ellipse_points(&frame, 0, false, self.tol, &mut |p| {
                     if first {
@@ -497,7 +511,7 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
                     if self.quiet {
                         self.sink.skipped(1);
                     } else {
-                        emit(self.sink, from, to);
+                        emit(&mut self.sink, from, to);
                     }
                     return;
                 }
@@ -514,6 +528,7 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
     fn arc(&mut self, c_q8: Pt, r_q8: i64, t0: i64, sweep: i64, from: Pt, to: Pt) {
         let frame = EllipseFrame::with_q8(c_q8, r_q8, r_q8, UNIT_X);
         let tol = self.tol;
+        self.set_up(ARC_SETUP);
         if self.quiet {
             // The arc's m segments (m - 1 inner vertices and the last
             // one), each within the range square: one number each.
@@ -522,12 +537,12 @@ impl<'s, S: SegmentSink + ?Sized> Outline<'s, S> {
             return;
         }
         let mut out = ArcOut {
-            sink: &mut *self.sink,
+            sink: &mut self.sink,
             prev: from,
         };
         arc_inner_vertices(&frame, t0, sweep, tol, from, &mut out);
         let prev = out.prev;
-        emit(self.sink, prev, to);
+        emit(&mut self.sink, prev, to);
     }
 
     /// The cap before a run's first piece: `sp -> ... -> sm`.
@@ -681,6 +696,29 @@ pub(super) fn cut_inner(a0: Pt, a1: &mut Pt, b0: &mut Pt, b1: Pt, i: Option<Pt>)
     *a1 = i;
     *b0 = i;
     true
+}
+
+/// The outline's sink, with the numbers it is given (segments sent and
+/// left out) counted, and the set-ups: the stroke's work. (It wraps after
+/// 2^32 units, which the stroker's limit stops long before: a solid
+/// stroke goes at most a few thousand units past it.)
+struct Counted<'s, S: SegmentSink + ?Sized> {
+    sink: &'s mut S,
+    work: u32,
+}
+
+impl<S: SegmentSink + ?Sized> SegmentSink for Counted<'_, S> {
+    fn segment(&mut self, from: crate::geom::FinePoint, to: crate::geom::FinePoint) {
+        self.work = self.work.wrapping_add(1);
+        self.sink.segment(from, to);
+    }
+    fn window(&self) -> Option<(i32, i32)> {
+        self.sink.window()
+    }
+    fn skipped(&mut self, n: u32) {
+        self.work = self.work.wrapping_add(n);
+        self.sink.skipped(n);
+    }
 }
 
 #[cfg(test)]
