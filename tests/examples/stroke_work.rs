@@ -1,7 +1,7 @@
 //! Issue #36, G3: the issue's dashed strokes rendered through the
 //! Renderer in 1-row bands, for measuring with callgrind:
 //! `valgrind --tool=callgrind target/release/examples/stroke_work a [row]`
-//! (`a` to `m`, the cases below: the frame in 1-row bands; with `row`, only that
+//! (`a` to `m` and `t`, the cases below: the frame in 1-row bands; with `row`, only that
 //! band, through `render_window`; a third argument sets the frame's width).
 //! Prints the frame's report.
 
@@ -91,6 +91,7 @@ fn main() {
         loops_d += "c1 -1 -1 -1 0 1";
     }
     let loops = SvgPath::new(&loops_d).unwrap();
+    let text = "W".repeat(1024);
     let draw = |c: &mut Canvas<'_, '_, 3, Rgb565>| -> Result<(), DrawError> {
         match which {
             "a" => {
@@ -143,6 +144,16 @@ fn main() {
                 // (every chord of them a rectangle, every join round).
                 let s = StrokeStyle::new(1000 * 1024).with_join(LineJoin::Round);
                 let _ = c.stroke_shape(&loops, &s, [4095; 3], Blend::Over, Opacity::OPAQUE);
+            }
+            "t" => {
+                // Not a stroke: 1 KiB of text on one line (the bundled
+                // 16-px font), most of it right of the frame.
+                let style = softedge::text::AaTextStyle::new(
+                    &softedge::text::bundled::SANS_16,
+                    Rgb565::WHITE,
+                );
+                let _ = embedded_graphics::text::Text::new(&text, Point::new(0, 12), style)
+                    .draw(c);
             }
             "h" => {
                 // The renderer fuzz target's slow input: an 8x25-px
