@@ -152,8 +152,7 @@ fn main() {
                     &softedge::text::bundled::SANS_16,
                     Rgb565::WHITE,
                 );
-                let _ = embedded_graphics::text::Text::new(&text, Point::new(0, 12), style)
-                    .draw(c);
+                let _ = embedded_graphics::text::Text::new(&text, Point::new(0, 12), style).draw(c);
             }
             "h" => {
                 // The renderer fuzz target's slow input: an 8x25-px

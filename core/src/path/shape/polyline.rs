@@ -79,7 +79,7 @@ impl<P: Copy + Into<FinePoint>> Shape for Polyline<'_, P> {
             let p: FinePoint = p.into();
             FinePoint::new(p.x.saturating_add(t.x), p.y.saturating_add(t.y)).into()
         });
-        crate::path::stroke::union::polyline_union(points, style, tol, sink);
+        crate::path::stroke::union::polyline_union(points, style, tol, false, sink);
         Ok(())
     }
 }
@@ -273,7 +273,18 @@ impl<P: Copy + Into<FinePoint>> Shape for Polygon<'_, P> {
         let tol = fitted(self, style, tol, self.vertices.len() + 1);
         let mut s = Stroker::with_tolerance(style, tol, sink);
         self.describe(&mut s);
-        s.finish()
+        // An error (stopped past its work limit): no union for pieces not
+        // drawn.
+        s.finish()?;
+        // Where the stroke overlaps itself: the union, not the sum; the
+        // points in the order the stroker had them (clockwise on screen).
+        let points = self.vertices.iter().map(|&p| self.vertex(p).into());
+        if self.area2() >= 0 {
+            crate::path::stroke::union::polyline_union(points, style, tol, true, sink);
+        } else {
+            crate::path::stroke::union::polyline_union(points.rev(), style, tol, true, sink);
+        }
+        Ok(())
     }
 }
 

@@ -22,7 +22,8 @@
 //! 2. With a dash pattern, the pieces are cut into dashes ([`dash`]).
 //! 3. Runs of pieces get joins between them and caps at their ends
 //!    ([`outline`]).
-//! 4. A [`Polyline`](crate::path::Polyline)'s stroke (solid, up to
+//! 4. A [`Polyline`](crate::path::Polyline)'s or a centred
+//!    [`Polygon`](crate::path::Polygon)'s stroke (solid, up to
 //!    [`union::MAX_UNION_POINTS`] points) then gets the intersections of
 //!    its overlapping pieces subtracted and added back ([`union`]): the
 //!    edge engine applies the nonzero rule to each pixel's *mean* winding
@@ -59,7 +60,7 @@
 //! one for straight paths, and for curves wherever the stroke is
 //! narrower than twice the radius of curvature. A shape's stroke that
 //! would cost more than its work budget is built at a coarser `tol`
-//! ([`budget`]: only strokes thousands of pixels wide or curves across
+//! (`stroke/budget.rs`: only strokes thousands of pixels wide or curves across
 //! the whole range come near it).
 //!
 //! ## Alignment

@@ -1,7 +1,9 @@
-//! Where a polyline's stroke overlaps itself: the union of its pieces,
-//! not their sum.
+//! Where a polyline's or a polygon's stroke overlaps itself: the union
+//! of its pieces, not their sum.
 //!
-//! Takes a polyline (random access to its points) and the style its
+//! Takes a polyline or a closed polygon (random access to its points:
+//! a polygon's body from its last point back to the first and its join
+//! at the first are the outline's closing ones) and the style its
 //! outline ([`outline`](super::outline)) was built with; gives the
 //! [`SegmentSink`], after that outline, closed contours that turn the
 //! outline's winding number (the number of pieces covering a point) into
@@ -58,8 +60,9 @@
 //!
 //! ## Bounded, and the same in every band
 //!
-//! Only solid polylines of at most [`MAX_UNION_POINTS`] points, within
-//! the coordinate range by the stroke's reach, are treated (a longer one
+//! Only solid polylines and centred polygons of at most
+//! [`MAX_UNION_POINTS`] points, within the coordinate range by the
+//! stroke's reach, are treated (a longer one
 //! pays one comparison: a chart's strokes are unchanged). The terms are
 //! found from the pieces alone (the same in every band), and their work
 //! (subject vertices times clipper edges, over the parts) is summed
@@ -91,8 +94,8 @@ use super::outline::{
 };
 use super::{LineCap, LineJoin, MiterLimit, StrokeAlignment, StrokeStyle};
 
-/// The most points (repeated ones counted) of a polyline whose stroke
-/// gets the union treatment.
+/// The most points (repeated ones counted) of a polyline or polygon
+/// whose stroke gets the union treatment.
 pub const MAX_UNION_POINTS: usize = 16;
 
 /// The most work, in stage steps (a subject vertex through one clipping
@@ -100,9 +103,10 @@ pub const MAX_UNION_POINTS: usize = 16;
 /// its plain outline.
 pub const MAX_UNION_WORK: u32 = 1 << 16;
 
-/// Pieces of a polyline of `MAX_UNION_POINTS` points: a cap or join per
-/// point, a body per segment.
-const MAX_PIECES: usize = 2 * MAX_UNION_POINTS - 1;
+/// Pieces of a polygon of `MAX_UNION_POINTS` points: a join per point, a
+/// body per side (a polyline's: a cap or join per point, a body per
+/// segment, one fewer).
+const MAX_PIECES: usize = 2 * MAX_UNION_POINTS;
 
 /// The most vertices of a clipper: a body cut at both ends (a pentagon
 /// plus one) — bevel, miter and square-cap pieces have three or four.
@@ -216,6 +220,9 @@ struct Wedge {
 /// A polyline's pieces, regenerated on demand as the outline built them.
 struct Pieces<'a> {
     pts: &'a [Pt],
+    /// A closed polygon: a body from the last point back to the first,
+    /// and a join at every point (no caps).
+    closed: bool,
     sides: Sides,
     join: LineJoin,
     miter_limit: MiterLimit,
@@ -230,41 +237,95 @@ struct Pieces<'a> {
 }
 
 impl Pieces<'_> {
-    /// Bodies: `pts.len() - 1`.
+    /// Bodies: `pts.len() - 1`, or closed `pts.len()`.
     fn bodies(&self) -> usize {
-        self.pts.len().saturating_sub(1)
+        if self.closed {
+            self.pts.len()
+        } else {
+            self.pts.len().saturating_sub(1)
+        }
+    }
+
+    /// The point after point `k` along the path (closed: after the last,
+    /// the first).
+    fn next(&self, k: usize) -> usize {
+        if self.closed && k + 1 == self.pts.len() {
+            0
+        } else {
+            k + 1
+        }
+    }
+
+    /// The body before point `k`, if any (closed: before the first, the
+    /// last).
+    fn before(&self, k: usize) -> Option<usize> {
+        match k.checked_sub(1) {
+            None if self.closed => self.pts.len().checked_sub(1),
+            j => j,
+        }
     }
 
     /// The body `k`, uncut.
     fn body(&self, k: usize) -> Option<Piece> {
-        let (a, b) = (*self.pts.get(k)?, *self.pts.get(k + 1)?);
+        if k >= self.bodies() {
+            return None;
+        }
+        let (a, b) = (*self.pts.get(k)?, *self.pts.get(self.next(k))?);
         Piece::straight(a, b, self.sides)
+    }
+
+    /// Joins body `a` (ending at the join's point) to body `b` as the
+    /// outline does: the inner corner where it cut them (they tile).
+    fn join_cut(&self, a: &mut Piece, b: &mut Piece) -> Option<[i32; 2]> {
+        if a.ne == b.ns {
+            return None;
+        }
+        let (v, na, nb) = (a.e, a.ne, b.ns);
+        let cut = if is_right_turn(na, nb) {
+            let i = inner_corner(v, na, nb, self.sides.p, 1);
+            cut_inner(a.sp, &mut a.ep, &mut b.sp, b.ep, i).then_some(i)
+        } else {
+            let i = inner_corner(v, na, nb, self.sides.m, -1);
+            cut_inner(a.sm, &mut a.em, &mut b.sm, b.em, i).then_some(i)
+        };
+        cut.flatten().map(pack)
+    }
+
+    /// Pieces: a cap or join before each body and after the last (open),
+    /// a join before each body (closed).
+    fn count(&self) -> usize {
+        (2 * self.bodies() + usize::from(!self.closed)).min(MAX_PIECES)
     }
 
     /// Walks the outline's joins in order, recording where it cut the
     /// bodies (a cut depends on the cut before on the same side).
+    /// (Closed: the first body is held until the last is joined back to
+    /// it, its end cut by the join after it.)
     fn find_cuts(&mut self) {
         let Some(mut a) = self.body(0) else {
             return;
         };
+        let mut first = None;
         for k in 1..self.bodies() {
             let Some(mut b) = self.body(k) else {
                 return;
             };
-            if a.ne != b.ns {
-                let (v, na, nb) = (a.e, a.ne, b.ns);
-                let cut = if is_right_turn(na, nb) {
-                    let i = inner_corner(v, na, nb, self.sides.p, 1);
-                    cut_inner(a.sp, &mut a.ep, &mut b.sp, b.ep, i).then_some(i)
-                } else {
-                    let i = inner_corner(v, na, nb, self.sides.m, -1);
-                    cut_inner(a.sm, &mut a.em, &mut b.sm, b.em, i).then_some(i)
-                };
-                if let Some(slot) = self.cuts.get_mut(k) {
-                    *slot = cut.flatten().map(pack);
-                }
+            let cut = self.join_cut(&mut a, &mut b);
+            if let Some(slot) = self.cuts.get_mut(k) {
+                *slot = cut;
+            }
+            if k == 1 {
+                first = Some(a);
             }
             a = b;
+        }
+        if self.closed {
+            if let Some(mut f) = first {
+                let cut = self.join_cut(&mut a, &mut f);
+                if let Some(slot) = self.cuts.get_mut(0) {
+                    *slot = cut;
+                }
+            }
         }
     }
 
@@ -278,8 +339,8 @@ impl Pieces<'_> {
     /// corner of the cross-section to the cut).
     fn body_poly(&self, k: usize) -> Option<Poly> {
         let mut b = self.body(k)?;
-        let prev = k.checked_sub(1).and_then(|j| self.body(j));
-        let next = self.body(k + 1);
+        let prev = self.before(k).and_then(|j| self.body(j));
+        let next = self.body(self.next(k));
         let start_turn = prev.filter(|a| a.ne != b.ns);
         let end_turn = next.filter(|n| b.ne != n.ns);
         if let (Some(a), Some(i)) = (start_turn, self.cut(k)) {
@@ -289,7 +350,7 @@ impl Pieces<'_> {
                 b.sm = i;
             }
         }
-        if let (Some(n), Some(i)) = (end_turn, self.cut(k + 1)) {
+        if let (Some(n), Some(i)) = (end_turn, self.cut(self.next(k))) {
             if is_right_turn(b.ne, n.ns) {
                 b.ep = i;
             } else {
@@ -310,9 +371,10 @@ impl Pieces<'_> {
         Some(p)
     }
 
-    /// The wedge of the join at point `k` (`1..bodies`), if it has area.
+    /// The wedge of the join at point `k` (`1..bodies`, closed any), if
+    /// it has area.
     fn wedge(&self, k: usize) -> Option<Wedge> {
-        let a = self.body(k.checked_sub(1)?)?;
+        let a = self.body(self.before(k)?)?;
         let b = self.body(k)?;
         if a.ne == b.ns {
             return None;
@@ -363,7 +425,7 @@ impl Pieces<'_> {
             };
         }
         let k = t / 2;
-        if k == 0 || k == self.bodies() {
+        if !self.closed && (k == 0 || k == self.bodies()) {
             match self.cap {
                 LineCap::Butt => Form::Empty,
                 LineCap::Square => Form::Clip,
@@ -387,7 +449,7 @@ impl Pieces<'_> {
             return;
         }
         let k = t / 2;
-        if k == 0 || k == self.bodies() {
+        if !self.closed && (k == 0 || k == self.bodies()) {
             let Some((from, to)) = self.cap_ends(k) else {
                 return;
             };
@@ -812,15 +874,24 @@ pub(crate) enum Treatment {
 
 /// Adds the union's corrections of a polyline's stroke (see the module
 /// doc) to `sink`, after the outline the stroker gave it; nothing for a
-/// polyline beyond the treatment's limits.
+/// polyline beyond the treatment's limits. `closed`: a polygon's (its
+/// points once each, in the order its description sends them), stroked
+/// centred.
 pub(crate) fn polyline_union<S: SegmentSink + ?Sized>(
     points: impl ExactSizeIterator<Item = Pt>,
     style: &StrokeStyle<'_>,
     tol: Tolerance,
+    closed: bool,
     sink: &mut S,
 ) -> Treatment {
     // Longer polylines (a chart's) pay one comparison.
     if points.len() > MAX_UNION_POINTS || style.dash.is_some_and(|d| !d.is_solid()) {
+        return Treatment::None;
+    }
+    // An open path is stroked centred whatever the alignment; a polygon
+    // stroked inside or outside is left as it is (its joins' radii
+    // differ from the pieces' bounds taken here).
+    if closed && style.alignment != StrokeAlignment::Centre {
         return Treatment::None;
     }
     let style = style.with_alignment(StrokeAlignment::Centre);
@@ -846,12 +917,18 @@ pub(crate) fn polyline_union<S: SegmentSink + ?Sized>(
         }
         n += 1;
     }
+    // A polygon whose last point is its first: one closing body less
+    // (the stroker's `close` has no length to draw).
+    if closed && n > 1 && pts.first() == pts.get(n - 1) {
+        n -= 1;
+    }
     let Some(pts) = pts.get(..n).filter(|p| p.len() >= 2) else {
         return Treatment::None;
     };
     let r = sides.width() / 4;
     let mut pieces = Pieces {
         pts,
+        closed,
         sides,
         join: style.join,
         miter_limit: style.miter_limit,
@@ -864,7 +941,7 @@ pub(crate) fn polyline_union<S: SegmentSink + ?Sized>(
         round_count: arc_count(r + 1, HALF_TURN, tol) + 2,
     };
     pieces.find_cuts();
-    let count = (2 * pieces.bodies() + 1).min(MAX_PIECES);
+    let count = pieces.count();
     let mut forms = [Form::Empty; MAX_PIECES];
     let mut boxes = [Box4::EMPTY; MAX_PIECES];
     for (t, (f, b)) in forms
@@ -883,10 +960,18 @@ pub(crate) fn polyline_union<S: SegmentSink + ?Sized>(
             let (fi, fj) = (form_of(&forms, i), form_of(&forms, j));
             // A body and the join or cap at its end; two bodies the
             // outline cut at their inner corner, or that go straight on.
+            // Closed, around the first point: its join and the last
+            // body; the first and the last body.
+            let last = count.saturating_sub(1);
             let tiles = j == i + 1
                 || (i % 2 == 1
                     && j == i + 2
-                    && (pieces.cut(j / 2).is_some() || form_of(&forms, i + 1) == Form::Empty));
+                    && (pieces.cut(j / 2).is_some() || form_of(&forms, i + 1) == Form::Empty))
+                || (closed && i == 0 && j == last)
+                || (closed
+                    && i == 1
+                    && j == last
+                    && (pieces.cut(0).is_some() || form_of(&forms, 0) == Form::Empty));
             let meet = box_of(&boxes, i).meet(box_of(&boxes, j));
             if fi == Form::Empty
                 || fj == Form::Empty
@@ -1081,7 +1166,7 @@ mod tests {
     use super::*;
     use crate::geom::FinePoint;
     use crate::path::testing::{Lcg, Numbering, Tally};
-    use crate::path::{Polyline, Shape};
+    use crate::path::{Polygon, Polyline, Shape};
 
     const JOINS: [LineJoin; 3] = [LineJoin::Miter, LineJoin::Round, LineJoin::Bevel];
     const CAPS: [LineCap; 3] = [LineCap::Butt, LineCap::Round, LineCap::Square];
@@ -1100,10 +1185,11 @@ mod tests {
         (pts, style)
     }
 
-    fn pieces_of<'a>(pts: &'a [Pt], style: &StrokeStyle<'_>) -> Pieces<'a> {
+    fn pieces_of<'a>(pts: &'a [Pt], style: &StrokeStyle<'_>, closed: bool) -> Pieces<'a> {
         let sides = style.sides();
         let mut p = Pieces {
             pts,
+            closed,
             sides,
             join: style.join,
             miter_limit: style.miter_limit,
@@ -1119,29 +1205,44 @@ mod tests {
     /// The pieces regenerated here are the outline's, vertex for vertex:
     /// their shoelace sums add up to the outline's, exactly; each is
     /// convex and clockwise; and no round piece has more vertices than
-    /// its bound.
+    /// its bound. Polylines and (every other case) closed polygons,
+    /// their points in the order their description sends them.
     #[test]
     fn the_regenerated_pieces_sum_to_the_outline() {
         let mut rng = Lcg(0x0a17_0b1e_2c3d_4e5f);
-        for k in 0..600 {
+        for k in 0..1200 {
             let n = 2 + k % 15;
+            let closed = k % 2 == 1;
             let (pts, style) = case(&mut rng, n, k);
+            let polygon = Polygon::new(&pts);
+            let area2: i128 = (0..pts.len())
+                .map(|i| Pt::from(pts[i]).cross(Pt::from(pts[(i + 1) % pts.len()])))
+                .sum();
+            let forward = area2 >= 0;
             // With the corrections: still closed contours, in range.
             let mut outline = Tally::default();
-            Polyline::new(&pts)
-                .stroke(&style, &mut outline)
-                .unwrap_or(());
             // The outline alone: the stroker, without the corrections.
             let mut alone = Tally::default();
             {
                 let mut s = crate::path::Stroker::new(&style, &mut alone);
-                Polyline::new(&pts).describe(&mut s);
+                if closed {
+                    polygon.stroke(&style, &mut outline).unwrap_or(());
+                    polygon.describe(&mut s);
+                } else {
+                    Polyline::new(&pts)
+                        .stroke(&style, &mut outline)
+                        .unwrap_or(());
+                    Polyline::new(&pts).describe(&mut s);
+                }
                 s.finish().unwrap_or(());
             }
-            let ps: Vec<Pt> = pts.iter().map(|&p| Pt::from(p)).collect();
-            let pieces = pieces_of(&ps, &style);
+            let mut ps: Vec<Pt> = pts.iter().map(|&p| Pt::from(p)).collect();
+            if closed && !forward {
+                ps.reverse();
+            }
+            let pieces = pieces_of(&ps, &style, closed);
             let mut sum = 0i128;
-            for t in 0..2 * pieces.bodies() + 1 {
+            for t in 0..pieces.count() {
                 let mut v = Vec::new();
                 pieces.points(t, &mut |p| v.push(p));
                 let form = pieces.form(t);
@@ -1159,7 +1260,7 @@ mod tests {
                     assert!(turn >= -slack, "case {k}: piece {t} turns left at {j}");
                 }
             }
-            assert_eq!(sum, alone.area2, "case {k}");
+            assert_eq!(sum, alone.area2, "case {k} (closed {closed})");
             assert!(outline.closed(), "case {k}");
         }
     }
@@ -1169,16 +1270,24 @@ mod tests {
     #[test]
     fn the_corrections_take_the_same_numbers_in_every_band() {
         let mut rng = Lcg(0x0b1e_0a17_5f4e_3d2c);
-        for k in 0..300 {
+        for k in 0..600 {
             let n = 3 + k % 14;
             let (pts, style) = case(&mut rng, n, k);
-            let line = Polyline::new(&pts);
+            let (line, polygon) = (Polyline::new(&pts), Polygon::new(&pts));
+            // Polylines, and (every other case) closed polygons.
+            let stroke = |sink: &mut Numbering| {
+                if k % 2 == 0 {
+                    line.stroke(&style, sink).unwrap_or(());
+                } else {
+                    polygon.stroke(&style, sink).unwrap_or(());
+                }
+            };
             let mut whole = Numbering {
                 window: None,
                 next: 0,
                 segs: Vec::new(),
             };
-            line.stroke(&style, &mut whole).unwrap_or(());
+            stroke(&mut whole);
             for lo in (0..64 * 1024).step_by(7 * 1024) {
                 let w = (lo, lo + 3 * 1024);
                 let mut band = Numbering {
@@ -1186,7 +1295,7 @@ mod tests {
                     next: 0,
                     segs: Vec::new(),
                 };
-                line.stroke(&style, &mut band).unwrap_or(());
+                stroke(&mut band);
                 assert_eq!(band.next, whole.next, "case {k}, band {w:?}");
                 let meets = |s: &&(u32, FinePoint, FinePoint)| {
                     s.1.y.max(s.2.y) >= w.0 && s.1.y.min(s.2.y) <= w.1
@@ -1204,32 +1313,38 @@ mod tests {
     #[test]
     fn short_polylines_get_the_full_treatment() {
         let mut rng = Lcg(0x5eed_3636);
-        let mut counts = [[0u32; 3]; 2];
+        let mut counts = [[[0u32; 3]; 2]; 2];
         for k in 0..400 {
             let long = k % 2 == 1;
             let n = if long { 8 + k % 9 } else { 3 + k % 5 };
             let (pts, style) = case(&mut rng, n, k);
-            let mut t = Tally::default();
-            let got = polyline_union(
-                pts.iter().map(|&p| Pt::from(p)),
-                &style,
-                Tolerance::DEFAULT,
-                &mut t,
-            );
-            let i = match got {
-                Treatment::Full => 0,
-                Treatment::WithoutRoundPairs => 1,
-                Treatment::None => 2,
-            };
-            counts[usize::from(long)][i] += 1;
-            if !long {
-                assert_eq!(got, Treatment::Full, "case {k}");
+            for closed in [false, true] {
+                let mut t = Tally::default();
+                let got = polyline_union(
+                    pts.iter().map(|&p| Pt::from(p)),
+                    &style,
+                    Tolerance::DEFAULT,
+                    closed,
+                    &mut t,
+                );
+                let i = match got {
+                    Treatment::Full => 0,
+                    Treatment::WithoutRoundPairs => 1,
+                    Treatment::None => 2,
+                };
+                counts[usize::from(closed)][usize::from(long)][i] += 1;
+                if !long {
+                    assert_eq!(got, Treatment::Full, "case {k} (closed {closed})");
+                }
             }
         }
         std::println!(
-            "full / without round pairs / none: 3..7 points {:?}, 8..16 points {:?}",
-            counts[0],
-            counts[1]
+            "full / without round pairs / none: polylines of 3..7 points {:?}, 8..16 points \
+             {:?}; polygons {:?}, {:?}",
+            counts[0][0],
+            counts[0][1],
+            counts[1][0],
+            counts[1][1]
         );
     }
 }
