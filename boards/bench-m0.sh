@@ -87,6 +87,7 @@ $1 == "image" {
     if (!($2 in iseen)) { iseen[$2] = 1; iorder[++ni] = $2 }
     image[$2] = $3; iarea[$2] = $4
 }
+$1 == "image_lent" { ilent[$2] = $3 }
 $1 == "dial_ram" {
     nram++; rslots[nram] = $2; rslotb[nram] = $3; rband[nram] = $4; rdma[nram] = $5; rstack[nram] = $6; rinsns[nram] = $7
 }
@@ -192,6 +193,7 @@ END {
     }
     printf "```\n"
     slabel["aa_rgb"] = "softedge AA (`AaStyle`), 16-row bands"
+    slabel["aa_rgb_lent"] = "softedge AA, the same with the band buffer lent (`Renderer::render_lent`)"
     slabel["eg_fill"] = "e-g aliased (`PrimitiveStyle`), framebuffer with slice `fill_solid`"
     slabel["eg_stock_fb"] = "e-g aliased (`PrimitiveStyle`), e-g `Framebuffer` (`draw_iter`)"
     # The shapes of workloads/src/render/ui.rs: a disc of radius 50; an
@@ -238,16 +240,18 @@ END {
     ilabel["icon48"] = "24-px 1-bpp icon scaled to 48 px, tinted (bilinear mask)"
     if (ni > 0) {
         printf "\nImages alone on a 240x240 Rgb565 frame (issue 35), softedge `AaImage`, 16-row bands; marginal = frame with the image - frame without it, per px = marginal / image pixels on screen:\n\n"
-        printf "| image | marginal | image px | per px | frame |\n| --- | ---: | ---: | ---: | ---: |\n"
+        printf "| image | marginal | image px | per px | frame | band buffer lent (`render_lent`): marginal | per px |\n| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n"
         for (i = 1; i <= ni; i++) {
             k = iorder[i]
             if (k == "none") continue
             m = image[k] - image["none"]
-            printf "| %s | %s | %s | %s | %s |\n", (k in ilabel ? ilabel[k] : k), group(m), group(iarea[k]), perpx(m / iarea[k]), group(image[k])
+            ml = ilent[k] - ilent["none"]
+            printf "| %s | %s | %s | %s | %s | %s | %s |\n", (k in ilabel ? ilabel[k] : k), group(m), group(iarea[k]), perpx(m / iarea[k]), group(image[k]), group(ml), perpx(ml / iarea[k])
         }
         printf "\n(frame without an image: %s)\n", group(image["none"])
     }
     rlabel["aa_rgb"] = "softedge AA, `render` / `render_window`, 16-row bands"
+    rlabel["aa_rgb_lent"] = "softedge AA, the band buffer lent (`render_lent` / `render_window_lent`)"
     rlabel["aa_rgb_cache_first"] = "softedge AA, the same through a shape cache (`Renderer::with_shape_cache`, 25.6 KB of segments), its first frame"
     rlabel["aa_rgb_cached"] = "softedge AA, the same through the shape cache, a later frame"
     rlabel["eg_fill"] = "e-g aliased, framebuffer; window: the shapes meeting it, `clipped`"

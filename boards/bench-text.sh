@@ -64,14 +64,15 @@ awk '
 $1 == "insns" && $2 ~ /^label_/ { n[$2] = $3; v[$2] = $4 }
 $1 == "font_flash" { g[$2] = $3; f[$2] = $4 }
 $1 == "cache" { used = $2; kept = $3; ram = $4 }
-function row(name, label,   m) {
-    m = v[name] - v["label_empty"]
+function row(name, label, empty,   m) {
+    m = v[name] - v[empty == "" ? "label_empty" : empty]
     printf "| %s | %d | %.3f M | %.3f M | %.1f k |\n", label, n[name], v[name] / 1e6, m / 1e6, m / n[name] / 1e3
 }
 END {
     printf "Issue #33 label, 240x240 Rgb565, 16-row bands, white on black (LVGL 9.5, Montserrat 16: 0.554 M, 10.1 k a glyph)\n\n"
     printf "| frame | glyphs | instructions | over the empty frame | per glyph |\n| --- | ---: | ---: | ---: | ---: |\n"
     row("label_prerasterized", "rasterized ahead (text::bundled::SANS_16)")
+    row("label_prerasterized_lent", "the same, the band buffer lent (`Renderer::render_lent`, a DMA flush)", "label_empty_lent")
     row("label_outline_cached", "outline font, glyph cache warm")
     row("label_outline_first", "outline font, glyph cache cold (first frame)")
     row("label_outline", "outline font, no cache (text::Text)")
@@ -85,6 +86,7 @@ if [ -n "$raw" ]; then
     $1 == "font_flash" && $2 == "latin1" { flash = $4 }
     END {
         printf "label prerasterized %d %d\n", n["label_prerasterized"], v["label_prerasterized"] - v["label_empty"]
+        printf "label prerasterized_lent %d %d\n", n["label_prerasterized_lent"], v["label_prerasterized_lent"] - v["label_empty_lent"]
         printf "label outline_cached %d %d\n", n["label_outline_cached"], v["label_outline_cached"] - v["label_empty"]
         printf "font_flash %d\n", flash
     }' "$out" >"$raw"

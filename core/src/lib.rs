@@ -55,7 +55,9 @@
 //!    formats, Bayer and Floyd–Steinberg dithering in linear light, display
 //!    profiles.
 //! 6. Flush: [`render`] (feature `embedded-graphics`), the frame loop into
-//!    any embedded-graphics `DrawTarget`, whole frames or a dirty window.
+//!    any embedded-graphics `DrawTarget`, or into the band buffer a DMA
+//!    display lends ([`render::BandTarget`]), whole frames or a dirty
+//!    window.
 //!
 //! Users draw through [`canvas`] (a band's canvas: any shape, mesh or
 //! outline, in painter's order; also an embedded-graphics `DrawTarget`) and

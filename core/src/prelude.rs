@@ -14,7 +14,7 @@ pub use crate::draw::{AaDrawable, AaGradient, AaStyle};
 pub use crate::geom::FinePoint;
 pub use crate::path::{Dash, LineCap, LineJoin, MiterLimit};
 pub use crate::raster::DrawError;
-pub use crate::render::{FrameReport, RenderError, Renderer};
+pub use crate::render::{BandTarget, FrameReport, RenderError, Renderer};
 pub use crate::style::{Blend, Edges, FillRule, Opacity};
 #[cfg(feature = "text")]
 pub use crate::text::DrawAaText;

@@ -16,6 +16,10 @@
 //!   frames that share it;
 //! - window = frame: `render_window` of a sub-rectangle gives that part
 //!   of the whole frame, and sends nothing outside it;
+//! - lent = streamed: the frame and the window made in a lent band
+//!   buffer (`render_lent`, `render_window_lent`, a `BandTarget` whose
+//!   buffer is scrambled between bands) are the streamed ones, report
+//!   and all;
 //! - the walk cache across frames: one `Renderer` kept over five
 //!   frames (as firmware keeps it: its 1, 4 or 64 walk-cache slots, its
 //!   band storage, maybe a shape cache), drawing the frame, a window of
@@ -429,6 +433,45 @@ impl DrawTarget for Screen {
     }
 }
 
+/// A display that lends a band buffer (`BandTarget`) and keeps what each
+/// band sends in a `Screen`; the buffer is scrambled after each band.
+struct Lending {
+    screen: Screen,
+    band: Vec<u16>,
+}
+
+impl OriginDimensions for Lending {
+    fn size(&self) -> Size {
+        self.screen.size()
+    }
+}
+
+impl BandTarget for Lending {
+    type Color = Rgb565;
+    type Raw = u16;
+    type Error = core::convert::Infallible;
+    fn buffer(&mut self) -> &mut [u16] {
+        &mut self.band
+    }
+    fn send(&mut self, area: &Rectangle) -> Result<(), Self::Error> {
+        let px: Vec<_> = area
+            .points()
+            .zip(&self.band)
+            .map(|(p, &v)| {
+                Pixel(
+                    p,
+                    Rgb565::from(embedded_graphics::pixelcolor::raw::RawU16::new(v)),
+                )
+            })
+            .collect();
+        let n = area.size.width as usize * area.size.height as usize;
+        assert_eq!(px.len(), n, "a band larger than the lent buffer was sent");
+        self.screen.draw_iter(px)?;
+        self.band.fill(0x5a5a);
+        Ok(())
+    }
+}
+
 /// A frame: its pixels and report.
 struct Frame {
     px: Vec<Option<Rgb565>>,
@@ -470,7 +513,25 @@ impl Scene<'_> {
         if let Some((segments, entries)) = shapes {
             r = r.with_shape_cache(segments, entries);
         }
-        self.render_with(&mut r, window, alive)
+        self.render_with(&mut r, window, alive, false)
+    }
+
+    /// [`render`](Self::render) into a display that lends its band
+    /// buffer (`Renderer::render_lent`, `render_window_lent`).
+    fn render_lent(
+        &self,
+        rows: u16,
+        slots: usize,
+        window: Option<Rectangle>,
+        alive: &[bool],
+    ) -> Frame {
+        let rows = rows.clamp(1, self.h);
+        let mut acc = vec![0i32; BandBuffer::<3>::acc_len(self.w, rows)];
+        let mut cover = vec![0i32; BandBuffer::<3>::cover_len(self.w, rows)];
+        let mut slot_store = vec![WalkSlot::<3>::EMPTY; slots];
+        let mut r = Renderer::new(&mut acc, &mut cover, &mut slot_store, self.w, self.h, rows)
+            .expect("a valid frame");
+        self.render_with(&mut r, window, alive, true)
     }
 
     /// One frame (or `window` of it) through renderer `r`, which the
@@ -481,6 +542,7 @@ impl Scene<'_> {
         r: &mut Renderer<'_, 3>,
         window: Option<Rectangle>,
         alive: &[bool],
+        lent: bool,
     ) -> Frame {
         let mut store = [ListedTriangle::<3>::EMPTY; LIST];
         let mut list = TriangleList::new(&mut store);
@@ -494,11 +556,20 @@ impl Scene<'_> {
         let f = |c: &mut Canvas<'_, '_, 3, Rgb565>| {
             draw(c, self.items, alive, &list, self.list_first, &mut rejected)
         };
-        let report = match window {
-            Some(w) => r.render_window(&mut screen, &format, Rgb565::BLACK, w, f),
-            None => r.render(&mut screen, &format, Rgb565::BLACK, f),
+        let mut lending = Lending {
+            screen: Screen::new(self.w, self.h),
+            band: vec![0x5a5a; usize::from(self.w) * usize::from(self.h)],
+        };
+        let report = match (window, lent) {
+            (Some(w), false) => r.render_window(&mut screen, &format, Rgb565::BLACK, w, f),
+            (None, false) => r.render(&mut screen, &format, Rgb565::BLACK, f),
+            (Some(w), true) => r.render_window_lent(&mut lending, &format, Rgb565::BLACK, w, f),
+            (None, true) => r.render_lent(&mut lending, &format, Rgb565::BLACK, f),
         }
         .unwrap_or_else(|e| panic!("render failed: {e:?}"));
+        if lent {
+            screen = lending.screen;
+        }
         Frame {
             px: screen.px,
             skipped: (report.skipped.count, report.skipped.first),
@@ -654,6 +725,20 @@ fuzz_target!(|data: &[u8]| {
     let part = scene.render(3, slots, Some(window), &all);
     check_window(&part, &frame, window, w, h, "a fresh renderer");
 
+    // Lent = streamed: the frame and the window made in a lent band
+    // buffer.
+    let lent = scene.render_lent(3, slots, None, &all);
+    check_same(&frame, &lent, w, "the frame into a lent band buffer");
+    let lent = scene.render_lent(16, slots, Some(window), &all);
+    check_window(
+        &lent,
+        &frame,
+        window,
+        w,
+        h,
+        "a window into a lent band buffer",
+    );
+
     // The walk cache across frames: one renderer kept over frames, as
     // firmware keeps it (its slots, band storage and maybe a shape cache
     // with it), draws the frame, a window of it, another frame (the items
@@ -676,15 +761,15 @@ fuzz_target!(|data: &[u8]| {
             "one renderer, {kept_slots} slots, bands of {kept_rows}, shape cache {kept_shapes}"
         );
         let fresh_b = other.render(kept_rows, 0, None, &all_b);
-        let a = scene.render_with(&mut r, None, &all);
+        let a = scene.render_with(&mut r, None, &all, false);
         check_same(&frame, &a, w, &format!("{what}, frame 1"));
-        let part = scene.render_with(&mut r, Some(window), &all);
+        let part = scene.render_with(&mut r, Some(window), &all, false);
         check_window(&part, &frame, window, w, h, &format!("{what}, frame 2"));
-        let b = other.render_with(&mut r, None, &all_b);
+        let b = other.render_with(&mut r, None, &all_b, false);
         check_same(&fresh_b, &b, w, &format!("{what}, frame 3 (changed)"));
-        let part = other.render_with(&mut r, Some(window_b), &all_b);
+        let part = other.render_with(&mut r, Some(window_b), &all_b, false);
         check_window(&part, &fresh_b, window_b, w, h, &format!("{what}, frame 4"));
-        let a = scene.render_with(&mut r, None, &all);
+        let a = scene.render_with(&mut r, None, &all, false);
         check_same(&frame, &a, w, &format!("{what}, frame 5 (the first again)"));
     }
 

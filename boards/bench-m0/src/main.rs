@@ -254,6 +254,11 @@ fn main() -> ! {
         bench.shape("aa_rgb", shape, ui::BAND_ROWS, || {
             ui::softedge_shape(shape, &mut bufs).is_ok()
         });
+        // The same frame with the one-band buffer lent for the band's
+        // pixels to be made in (`Renderer::render_lent`).
+        bench.shape("aa_rgb_lent", shape, ui::BAND_ROWS, || {
+            ui::softedge_shape_lent(shape, &mut bufs).is_ok()
+        });
         bench.shape("eg_fill", shape, FRAME_ROWS, || {
             ui::eg_shape(shape, &mut targets.fb);
             black_box(targets.fb.pixels());
@@ -269,7 +274,12 @@ fn main() -> ! {
     // Images (issue 35): each alone on the frame, and the frame without
     // it, softedge in 16-row bands.
     for image in images::Image::ALL {
-        bench.image(image, || images::softedge_image(image, &mut bufs).is_ok());
+        bench.image("image", image, || {
+            images::softedge_image(image, &mut bufs).is_ok()
+        });
+        bench.image("image_lent", image, || {
+            images::softedge_image_lent(image, &mut bufs).is_ok()
+        });
     }
 
     // The RP2040 firmware's panel (issue 14: its band height): a whole
@@ -359,6 +369,20 @@ fn main() -> ! {
             what,
             ui::BAND_ROWS,
             || ui::softedge_scene_stream(window, &mut bufs).is_ok(),
+            counted,
+        );
+        // The same with the one-band buffer lent (`Renderer::render_lent`,
+        // `render_window_lent`): the same windows and pixels sent (one a
+        // band over the band's rectangle, as `fill_contiguous` has them).
+        let mut spi = SpiCounter::new(side, side);
+        let counted = ui::softedge_scene(window, &mut bufs, &mut spi)
+            .ok()
+            .map(|()| spi);
+        bench.redraw(
+            "aa_rgb_lent",
+            what,
+            ui::BAND_ROWS,
+            || ui::softedge_scene_lent(window, &mut bufs).is_ok(),
             counted,
         );
         // The scene through a renderer with a shape cache
@@ -640,12 +664,15 @@ impl Bench<'_> {
 
     /// Measures a frame of one of the [`images`] cases and prints
     /// `image <case> <n> <image pixels>`.
-    fn image(&mut self, image: images::Image, frame: impl FnOnce() -> bool) {
-        let Some((insns, ok)) = self.measure("image", image.name(), 0, 0, images::BAND_ROWS, frame)
+    /// Prints `<kind> <image> <instructions> <image pixels>` (`kind`:
+    /// `image`, or `image_lent` with the band buffer lent).
+    fn image(&mut self, kind: &str, image: images::Image, frame: impl FnOnce() -> bool) {
+        let Some((insns, ok)) = self.measure(kind, image.name(), 0, 0, images::BAND_ROWS, frame)
         else {
             return;
         };
-        Self::tag(ok, "image ")
+        Self::tag(ok, kind)
+            .text(" ")
             .text(image.name())
             .text(" ")
             .dec(insns)

@@ -129,6 +129,32 @@ impl DrawTarget for Sink {
     }
 }
 
+/// A DMA display for the label ([`softedge::render::BandTarget`]): it
+/// lends a 16-row band buffer and hands each band on (a real driver starts
+/// the DMA of it; here nothing is done but keeping it).
+struct Lender {
+    band: &'static mut [u16],
+}
+
+impl OriginDimensions for Lender {
+    fn size(&self) -> Size {
+        Size::new(u32::from(LW), u32::from(LH))
+    }
+}
+
+impl softedge::render::BandTarget for Lender {
+    type Color = Rgb565;
+    type Raw = u16;
+    type Error = core::convert::Infallible;
+    fn buffer(&mut self) -> &mut [u16] {
+        self.band
+    }
+    fn send(&mut self, _area: &Rectangle) -> Result<(), Self::Error> {
+        core::hint::black_box(&self.band);
+        Ok(())
+    }
+}
+
 /// The lines drawn at 12 px (and their first halves at 24 px).
 #[cfg(feature = "text")]
 const LINES_12: &str = "The quick brown fox jumps over\nthe lazy dog. 0123456789 °C ±µ\nSphinx of black quartz, judge\nmy vow! AVAWAY Ty To 3.71 V";
@@ -141,6 +167,8 @@ fn glyphs(s: &str) -> u64 {
     s.chars().filter(|&c| c != '\n').count() as u64
 }
 
+// cortex-m-rt passes each `static mut` below to `main` as an argument.
+#[allow(clippy::too_many_arguments)]
 #[entry]
 fn main() -> ! {
     static mut ACC: [i32; ACC_LEN] = [0; ACC_LEN];
@@ -150,6 +178,7 @@ fn main() -> ! {
     static mut COVER1: [i32; COVER_ONE] = [0; COVER_ONE];
     static mut LACC: [i32; LACC_LEN] = [0; LACC_LEN];
     static mut LCOVER: [i32; LCOVER_LEN] = [0; LCOVER_LEN];
+    static mut LBAND: [u16; LW as usize * ROWS as usize] = [0; LW as usize * ROWS as usize];
     fw::stack::paint();
     let Some(core) = cortex_m::Peripherals::take() else {
         fw::exit(false)
@@ -268,15 +297,25 @@ fn main() -> ! {
     let Ok(mut label_renderer) = Renderer::new(LACC, LCOVER, &mut [], LW, LH, ROWS) else {
         fw::exit(false)
     };
+    let mut lender = Lender { band: LBAND };
+    // `lent`: into the lender's band buffer (`Renderer::render_lent`),
+    // else streamed to the checksum display.
     let mut label_frame =
         |name: &str,
          glyphs: u64,
+         lent: bool,
          draw: &mut dyn FnMut(&mut Canvas<'_, '_, 3, Rgb565>) -> Result<(), DrawError>| {
             let mut good = false;
             let ticks = counter.measure(|| {
-                good = label_renderer
-                    .render(&mut sink, &RGB565, [0, 0, 0], |c| draw(c))
-                    .is_ok();
+                good = if lent {
+                    label_renderer
+                        .render_lent(&mut lender, &RGB565, [0, 0, 0], |c| draw(c))
+                        .is_ok()
+                } else {
+                    label_renderer
+                        .render(&mut sink, &RGB565, [0, 0, 0], |c| draw(c))
+                        .is_ok()
+                };
             });
             ok &= good;
             Line::new()
@@ -290,8 +329,9 @@ fn main() -> ! {
         };
     // Twice: the first frame of a renderer clears its band buffer (about
     // 85 k more); the second is the steady state every later frame has.
-    label_frame("label_empty_first", 0, &mut |_| Ok(()));
-    label_frame("label_empty", 0, &mut |_| Ok(()));
+    label_frame("label_empty_first", 0, false, &mut |_| Ok(()));
+    label_frame("label_empty", 0, false, &mut |_| Ok(()));
+    label_frame("label_empty_lent", 0, true, &mut |_| Ok(()));
     #[cfg(feature = "text")]
     {
         use embedded_graphics::prelude::*;
@@ -309,12 +349,17 @@ fn main() -> ! {
         let raster = AaTextStyle::new(&bundled::SANS_16, white);
         // The frame `bash boards/profile-text.sh` profiles.
         bench_profile_on();
-        label_frame("label_prerasterized", n, &mut |c| {
+        label_frame("label_prerasterized", n, false, &mut |c| {
             EgText::with_baseline(LABEL, at, raster, Baseline::Top)
                 .draw(c)
                 .map(|_| ())
         });
         bench_profile_off();
+        label_frame("label_prerasterized_lent", n, true, &mut |c| {
+            EgText::with_baseline(LABEL, at, raster, Baseline::Top)
+                .draw(c)
+                .map(|_| ())
+        });
         let Ok(font) = Font::bundled() else {
             fw::exit(false)
         };
@@ -330,7 +375,7 @@ fn main() -> ! {
         let cache = GlyphCache::new(codes, slots, cells);
         let outline = AaTextStyle::new(CachedFont::new(&font, TextSize::px(16), &cache), white);
         for name in ["label_outline_first", "label_outline_cached"] {
-            label_frame(name, n, &mut |c| {
+            label_frame(name, n, false, &mut |c| {
                 EgText::with_baseline(LABEL, at, outline, Baseline::Top)
                     .draw(c)
                     .map(|_| ())
@@ -357,7 +402,9 @@ fn main() -> ! {
             style,
             softedge::text::Baseline::Top,
         );
-        label_frame("label_outline", n, &mut |c| direct.draw(c).map(|_| ()));
+        label_frame("label_outline", n, false, &mut |c| {
+            direct.draw(c).map(|_| ())
+        });
         for (name, f) in [
             ("sans16", &bundled::SANS_16),
             ("latin1", &fonts::latin1::SANS_16_LATIN1),

@@ -20,6 +20,10 @@ impl<T: Debug, E: Display> Display for RenderError<T, E> {
                 write!(f, "drawing failed in the band at row {band_y0}: {error}")
             }
             Self::Target(e) => write!(f, "display error: {e:?}"),
+            Self::Buffer { needed, got } => write!(
+                f,
+                "the display's band buffer holds {got} pixels, a band needs {needed}"
+            ),
         }
     }
 }
@@ -32,7 +36,7 @@ impl<T: Debug, E: Error + 'static> Error for RenderError<T, E> {
         match self {
             Self::Band(e) => Some(e),
             Self::Draw { error, .. } => Some(error),
-            Self::Size { .. } | Self::Target(_) => None,
+            Self::Size { .. } | Self::Target(_) | Self::Buffer { .. } => None,
         }
     }
 }
@@ -60,6 +64,9 @@ impl<T: defmt::Format, E: defmt::Format> defmt::Format for RenderError<T, E> {
                 defmt::write!(f, "Draw(row {}: {})", band_y0, error)
             }
             Self::Target(e) => defmt::write!(f, "Target({})", e),
+            Self::Buffer { needed, got } => {
+                defmt::write!(f, "Buffer({} < {})", got, needed)
+            }
         }
     }
 }

@@ -6,7 +6,10 @@
 //! table and pixel format, or dithering to 1 bit) and a drawing closure;
 //! gives the display one `fill_contiguous` per band over the band's
 //! rectangle, a DMA-friendly stream of rows (a band nothing was drawn on,
-//! one `fill_solid` of the background's colour).
+//! one `fill_solid` of the background's colour). A display that sends
+//! bands by DMA can lend its buffer instead ([`BandTarget`],
+//! [`Renderer::render_lent`]): the band's colours are then made in that
+//! buffer, with no stream of pixels.
 //!
 //! Per band the renderer hands the closure a [`Canvas`] over the band (the
 //! closure is called once per band, so keep the scene in data it can read
@@ -17,6 +20,8 @@
 //! right of what a row holds besides the background get the background's
 //! colour, when the profile has one colour for it everywhere. Each pixel
 //! sent is reset to the background for the next band (no separate clear).
+//! Made in the scratch and streamed, or made in a lent buffer: one toning
+//! (`tone_band`) for both.
 //!
 //! [`Renderer::render_window`] redraws only a rectangle of the frame: bands
 //! of that width, one window set-up per band on the target; the shapes
@@ -28,6 +33,8 @@ mod errors;
 pub mod pages;
 use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::geometry::{OriginDimensions, Point, Size};
+use embedded_graphics_core::pixelcolor::raw::RawData;
+use embedded_graphics_core::pixelcolor::PixelColor;
 use embedded_graphics_core::primitives::Rectangle;
 
 use crate::band::tags::{self, PALETTE};
@@ -61,6 +68,147 @@ pub enum RenderError<T, E> {
     },
     /// The display reported an error (the frame stops there).
     Target(T),
+    /// The buffer a [`BandTarget`] lends holds fewer pixels than a band
+    /// (the frame stops there).
+    Buffer {
+        /// Pixels of the band (its width times its rows).
+        needed: usize,
+        /// Pixels the buffer holds.
+        got: usize,
+    },
+}
+
+/// One pixel's raw bits as a display's buffer holds them: `u8`, `u16` or
+/// `u32` (embedded-graphics' storage of its colours' raw data: `u16` for
+/// `Rgb565`, `u8` for `Gray8` and `BinaryColor`).
+pub trait RawPixel: Copy + sealed::Sealed {
+    /// Bits it holds.
+    const BITS: usize;
+    /// The low [`BITS`](Self::BITS) of raw colour bits `raw`.
+    fn from_raw(raw: u32) -> Self;
+}
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for u8 {}
+    impl Sealed for u16 {}
+    impl Sealed for u32 {}
+}
+
+impl RawPixel for u8 {
+    const BITS: usize = 8;
+    #[inline(always)]
+    fn from_raw(raw: u32) -> Self {
+        raw as u8
+    }
+}
+
+impl RawPixel for u16 {
+    const BITS: usize = 16;
+    #[inline(always)]
+    fn from_raw(raw: u32) -> Self {
+        raw as u16
+    }
+}
+
+impl RawPixel for u32 {
+    const BITS: usize = 32;
+    #[inline(always)]
+    fn from_raw(raw: u32) -> Self {
+        raw
+    }
+}
+
+/// A display that lends the renderer a buffer for each band's pixels and
+/// sends it itself, as a DMA flush does ([`Renderer::render_lent`]): the
+/// band's colours are made in that buffer, as raw bits, with no stream of
+/// pixels through `fill_contiguous`. What LVGL's partial mode hands its
+/// `flush_cb`.
+///
+/// ```
+/// use embedded_graphics_core::geometry::{OriginDimensions, Size};
+/// use embedded_graphics_core::pixelcolor::Rgb565;
+/// use embedded_graphics_core::primitives::Rectangle;
+/// use softedge::render::BandTarget;
+/// /// A 240x240 panel whose DMA sends 16 rows at a time.
+/// struct Panel {
+///     band: [u16; 240 * 16],
+/// }
+/// impl OriginDimensions for Panel {
+///     fn size(&self) -> Size {
+///         Size::new(240, 240)
+///     }
+/// }
+/// impl BandTarget for Panel {
+///     type Color = Rgb565;
+///     type Raw = u16;
+///     type Error = core::convert::Infallible;
+///     fn buffer(&mut self) -> &mut [u16] {
+///         &mut self.band
+///     }
+///     fn send(&mut self, area: &Rectangle) -> Result<(), Self::Error> {
+///         // Set the window to `area`, start the DMA of its pixels, wait.
+///         Ok(())
+///     }
+/// }
+/// ```
+///
+/// A `Raw` narrower than the colour's raw bits does not compile where a
+/// frame is rendered into the display:
+///
+/// ```compile_fail
+/// # use embedded_graphics_core::geometry::{OriginDimensions, Size};
+/// # use embedded_graphics_core::pixelcolor::Rgb565;
+/// # use embedded_graphics_core::primitives::Rectangle;
+/// # use softedge::render::{BandTarget, Renderer};
+/// # use softedge::tone::{format::Rgb565Format, Curve};
+/// # use softedge::BandBuffer;
+/// struct Narrow([u8; 64]);
+/// # impl OriginDimensions for Narrow { fn size(&self) -> Size { Size::new(8, 8) } }
+/// impl BandTarget for Narrow {
+///     type Color = Rgb565;
+///     type Raw = u8; // Rgb565 needs 16 bits
+///     type Error = core::convert::Infallible;
+///     fn buffer(&mut self) -> &mut [u8] { &mut self.0 }
+///     fn send(&mut self, _: &Rectangle) -> Result<(), Self::Error> { Ok(()) }
+/// }
+/// # let mut acc = [0i32; BandBuffer::<3>::acc_len(8, 8)];
+/// # let mut cover = [0i32; BandBuffer::<3>::cover_len(8, 8)];
+/// # static RGB565: Rgb565Format = Rgb565Format::new(Curve::Srgb);
+/// let mut r = Renderer::<3>::new(&mut acc, &mut cover, &mut [], 8, 8, 8).unwrap();
+/// let _ = r.render_lent(&mut Narrow([0; 64]), &RGB565, [0; 3], |_| Ok::<(), ()>(()));
+/// ```
+pub trait BandTarget: OriginDimensions {
+    /// The display's colour.
+    type Color: PixelColor + RawColor;
+    /// Its raw bits in the buffer: at least the colour's
+    /// (`Self::Color::Raw::BITS_PER_PIXEL`, checked when the renderer is
+    /// compiled for the target): `u16` for `Rgb565`.
+    type Raw: RawPixel;
+    /// What [`send`](Self::send) can fail with.
+    type Error;
+    /// The buffer the next band's pixels are made in: row after row, the
+    /// band's width times its rows of them from the start (at least that
+    /// many, or the frame stops with [`RenderError::Buffer`]). Asked once
+    /// a band, after the band is drawn.
+    fn buffer(&mut self) -> &mut [Self::Raw];
+    /// Sends the pixels the buffer starts with to `area` of the display
+    /// (`area.size.width * area.size.height` of them, row after row).
+    fn send(&mut self, area: &Rectangle) -> Result<(), Self::Error>;
+    /// Fills `area` with `color`: a band nothing was drawn on, where the
+    /// background has one colour everywhere. By default the buffer is
+    /// filled and sent; a display with a fill command of its own can
+    /// use that.
+    fn fill_solid(&mut self, area: &Rectangle, color: Self::Color) -> Result<(), Self::Error> {
+        let n = area.size.width as usize * area.size.height as usize;
+        let raw = Self::Raw::from_raw(color.to_raw());
+        let buf = self.buffer();
+        let n = n.min(buf.len());
+        if let Some(run) = buf.get_mut(..n) {
+            run.fill(raw);
+        }
+        self.send(area)
+    }
 }
 
 /// What a rendered frame skipped.
@@ -244,7 +392,13 @@ impl<'a, const C: usize> Renderer<'a, C> {
             });
         }
         let bands = Bands::new(self.width, self.height, self.band_rows);
-        self.frame(target, &mut profile, background.into_linear(), bands, draw)
+        self.frame(
+            Streamed(target),
+            &mut profile,
+            background.into_linear(),
+            bands,
+            draw,
+        )
     }
 
     /// Renders only the window `area` of the frame (clipped to it): what a
@@ -267,6 +421,87 @@ impl<'a, const C: usize> Renderer<'a, C> {
         P: Profile<C, Color = D::Color>,
         F: FnMut(&mut Canvas<'_, '_, C, D::Color>) -> Result<(), E>,
     {
+        let Some(bands) = self.window_bands(area) else {
+            return Ok(FrameReport::default());
+        };
+        self.frame(
+            Streamed(target),
+            &mut profile,
+            background.into_linear(),
+            bands,
+            draw,
+        )
+    }
+
+    /// [`render`](Self::render) into a display that lends a buffer for
+    /// each band and sends it itself ([`BandTarget`], a DMA flush): the
+    /// same pixels, made in the lent buffer instead of streamed through
+    /// `fill_contiguous` (on the Cortex-M0 about ten instructions a pixel
+    /// of every band drawn on fewer; `boards/README.md`). The buffer must
+    /// hold a band: the frame's width times `band_rows` pixels.
+    pub fn render_lent<T, P, B, E, F>(
+        &mut self,
+        target: &mut T,
+        mut profile: P,
+        background: B,
+        draw: F,
+    ) -> Result<FrameReport, RenderError<T::Error, E>>
+    where
+        T: BandTarget,
+        B: IntoLinear<C>,
+        P: Profile<C, Color = T::Color>,
+        F: FnMut(&mut Canvas<'_, '_, C, T::Color>) -> Result<(), E>,
+    {
+        let size = target.size();
+        if u32::from(self.width) > size.width || u32::from(self.height) > size.height {
+            return Err(RenderError::Size {
+                frame: (self.width, self.height),
+                display: (size.width, size.height),
+            });
+        }
+        let bands = Bands::new(self.width, self.height, self.band_rows);
+        self.frame(
+            Lent(target),
+            &mut profile,
+            background.into_linear(),
+            bands,
+            draw,
+        )
+    }
+
+    /// [`render_window`](Self::render_window) into a [`BandTarget`]: each
+    /// band of the window made in the lent buffer (the window's width
+    /// times the band's rows of it) and sent over the window's part of the
+    /// band.
+    pub fn render_window_lent<T, P, B, E, F>(
+        &mut self,
+        target: &mut T,
+        mut profile: P,
+        background: B,
+        area: Rectangle,
+        draw: F,
+    ) -> Result<FrameReport, RenderError<T::Error, E>>
+    where
+        T: BandTarget,
+        B: IntoLinear<C>,
+        P: Profile<C, Color = T::Color>,
+        F: FnMut(&mut Canvas<'_, '_, C, T::Color>) -> Result<(), E>,
+    {
+        let Some(bands) = self.window_bands(area) else {
+            return Ok(FrameReport::default());
+        };
+        self.frame(
+            Lent(target),
+            &mut profile,
+            background.into_linear(),
+            bands,
+            draw,
+        )
+    }
+
+    /// The bands of window `area` clipped to the frame; `None` if nothing
+    /// is left of it.
+    fn window_bands(&self, area: Rectangle) -> Option<Bands> {
         let frame = Rectangle::new(
             Point::zero(),
             Size::new(u32::from(self.width), u32::from(self.height)),
@@ -274,25 +509,29 @@ impl<'a, const C: usize> Renderer<'a, C> {
         let area = area.intersection(&frame);
         let (w, h) = (area.size.width as u16, area.size.height as u16);
         if w == 0 || h == 0 {
-            return Ok(FrameReport::default());
+            return None;
         }
-        let bands = Bands::window(area.top_left.x, area.top_left.y, w, h, self.band_rows);
-        self.frame(target, &mut profile, background.into_linear(), bands, draw)
+        Some(Bands::window(
+            area.top_left.x,
+            area.top_left.y,
+            w,
+            h,
+            self.band_rows,
+        ))
     }
 
-    fn frame<D, P, E, F>(
+    fn frame<T, P, E, F>(
         &mut self,
-        target: &mut D,
+        mut target: T,
         profile: &mut P,
         background: [u16; C],
         bands: Bands,
         mut draw: F,
-    ) -> Result<FrameReport, RenderError<D::Error, E>>
+    ) -> Result<FrameReport, RenderError<T::Error, E>>
     where
-        D: DrawTarget,
-        D::Color: RawColor,
-        P: Profile<C, Color = D::Color>,
-        F: FnMut(&mut Canvas<'_, '_, C, D::Color>) -> Result<(), E>,
+        T: Flush<C>,
+        P: Profile<C, Color = T::Color>,
+        F: FnMut(&mut Canvas<'_, '_, C, T::Color>) -> Result<(), E>,
     {
         let bg = background.map(|v| v.min(crate::LIN_MAX));
         WalkCache::new(&mut *self.slots).clear();
@@ -343,7 +582,13 @@ impl<'a, const C: usize> Renderer<'a, C> {
             if let (Err(e), None) = (r, &failed) {
                 failed = Some((band.y0, e));
             }
-            send(&mut buf, target, &mut *profile).map_err(RenderError::Target)?;
+            match target.flush(&mut buf, &mut *profile) {
+                Ok(()) => {}
+                Err(FlushError::Target(e)) => return Err(RenderError::Target(e)),
+                Err(FlushError::Buffer { needed, got }) => {
+                    return Err(RenderError::Buffer { needed, got })
+                }
+            }
             self.clean = Some((band.width, band.rows));
             report.bands += 1;
         }
@@ -354,19 +599,61 @@ impl<'a, const C: usize> Renderer<'a, C> {
     }
 }
 
+/// Where a band goes: streamed to a `DrawTarget`, or made in the buffer a
+/// [`BandTarget`] lends.
+trait Flush<const C: usize> {
+    type Color: RawColor;
+    type Error;
+    fn flush<P: Profile<C, Color = Self::Color>>(
+        &mut self,
+        buf: &mut BandBuffer<'_, C>,
+        profile: &mut P,
+    ) -> Result<(), FlushError<Self::Error>>;
+}
+
+/// A `DrawTarget`, sent each band in one `fill_contiguous`.
+struct Streamed<'t, D>(&'t mut D);
+
+impl<D: DrawTarget, const C: usize> Flush<C> for Streamed<'_, D>
+where
+    D::Color: RawColor,
+{
+    type Color = D::Color;
+    type Error = D::Error;
+
+    fn flush<P: Profile<C, Color = D::Color>>(
+        &mut self,
+        buf: &mut BandBuffer<'_, C>,
+        profile: &mut P,
+    ) -> Result<(), FlushError<D::Error>> {
+        send(buf, &mut *self.0, profile).map_err(FlushError::Target)
+    }
+}
+
+/// A [`BandTarget`], each band made in its buffer.
+struct Lent<'t, T>(&'t mut T);
+
+impl<T: BandTarget, const C: usize> Flush<C> for Lent<'_, T> {
+    type Color = T::Color;
+    type Error = T::Error;
+
+    fn flush<P: Profile<C, Color = T::Color>>(
+        &mut self,
+        buf: &mut BandBuffer<'_, C>,
+        profile: &mut P,
+    ) -> Result<(), FlushError<T::Error>> {
+        lend(buf, &mut *self.0, profile)
+    }
+}
+
 /// Sends a band through `profile` to `target` in one `fill_contiguous`
 /// (or one `fill_solid` when nothing was drawn on it and the background
 /// has one colour everywhere), leaving the band clean for the next:
 /// changes zero, heads reset, every tag the background's.
 ///
-/// The band's colours are made row by row into its scratch of changes
-/// (`width * rows` words, all zero between shapes), as raw display bits:
-/// a pixel tagged with a palette entry gets the entry's colour, toned once
-/// for the band (see `band::tags`); the others are resolved (the one
-/// rounding), toned and packed one by one; columns left and right of a
-/// row's drawn extent get the background's. Every pixel sent is reset to
-/// the background. Then the run is streamed to the target from the
-/// slice, each pixel zeroed as it is taken.
+/// The band's colours are made ([`tone_band`]) into its scratch of
+/// changes (`width * rows` words, all zero between shapes), then streamed
+/// to the target from that slice, each pixel zeroed as it is taken.
 fn send<D, P, const C: usize>(
     buf: &mut BandBuffer<'_, C>,
     target: &mut D,
@@ -378,18 +665,128 @@ where
     P: Profile<C, Color = D::Color>,
 {
     let band = buf.band();
-    let area = Rectangle::new(
-        Point::new(band.x0, band.y0),
-        Size::new(u32::from(band.width), u32::from(band.rows)),
+    let area = band_area(band);
+    let bg = buf.background();
+    let mut parts = buf.flush_parts();
+    if let Some(color) = profile.uniform(bg) {
+        if parts.untouched() {
+            return target.fill_solid(&area, color);
+        }
+    }
+    let uniform = profile.uniform(bg).is_some();
+    let out = core::mem::take(&mut parts.out);
+    tone_band(&mut parts, profile, uniform, out, |code| code as i32);
+    let len = usize::from(band.width) * usize::from(band.rows);
+    stream(out.get_mut(..len).unwrap_or_default(), &area, target)
+}
+
+/// Streams `out` to `area` of `target` in one `fill_contiguous`, each
+/// pixel zeroed as it is taken; what the target did not take is zeroed
+/// after.
+#[inline(always)]
+fn stream<D>(out: &mut [i32], area: &Rectangle, target: &mut D) -> Result<(), D::Error>
+where
+    D: DrawTarget,
+    D::Color: RawColor,
+{
+    let mut taken = 0usize;
+    let sent = target.fill_contiguous(
+        area,
+        out.iter_mut().map(|v| {
+            taken += 1;
+            D::Color::from_raw(core::mem::take(v) as u32)
+        }),
     );
+    if let Some(rest) = out.get_mut(taken..) {
+        rest.fill(0);
+    }
+    sent
+}
+
+/// Sends a band through `profile` into the buffer `target` lends, then
+/// asks it to send that ([`BandTarget::send`]; or its `fill_solid` when
+/// nothing was drawn on the band and the background has one colour
+/// everywhere), leaving the band clean for the next. The band's colours
+/// are made ([`tone_band`]) in the lent buffer itself: no stream of
+/// pixels, and the band's scratch of changes is never written.
+fn lend<T, P, const C: usize>(
+    buf: &mut BandBuffer<'_, C>,
+    target: &mut T,
+    profile: &mut P,
+) -> Result<(), FlushError<T::Error>>
+where
+    T: BandTarget,
+    P: Profile<C, Color = T::Color>,
+{
+    let band = buf.band();
+    let area = band_area(band);
+    let len = usize::from(band.width) * usize::from(band.rows);
+    let got = target.buffer().len();
+    if got < len {
+        return Err(FlushError::Buffer { needed: len, got });
+    }
     let bg = buf.background();
     let mut parts = buf.flush_parts();
     let uniform = profile.uniform(bg);
     if let Some(color) = uniform {
         if parts.untouched() {
-            return target.fill_solid(&area, color);
+            return target.fill_solid(&area, color).map_err(FlushError::Target);
         }
     }
+    let out = target.buffer().get_mut(..len).unwrap_or_default();
+    const {
+        assert!(
+            T::Raw::BITS >= <<T::Color as PixelColor>::Raw as RawData>::BITS_PER_PIXEL,
+            "BandTarget::Raw holds fewer bits than the display's colour"
+        );
+    }
+    tone_band(
+        &mut parts,
+        profile,
+        uniform.is_some(),
+        out,
+        T::Raw::from_raw,
+    );
+    target.send(&area).map_err(FlushError::Target)
+}
+
+/// Why a band could not be sent.
+enum FlushError<E> {
+    /// The target's buffer is shorter than the band.
+    Buffer { needed: usize, got: usize },
+    /// The target's own error.
+    Target(E),
+}
+
+/// The frame rectangle of `band`.
+fn band_area(band: crate::band::Band) -> Rectangle {
+    Rectangle::new(
+        Point::new(band.x0, band.y0),
+        Size::new(u32::from(band.width), u32::from(band.rows)),
+    )
+}
+
+/// The colours of a band's pixels as raw display bits into `out` (row
+/// after row, `width * rows` of them; `put` stores a raw colour), and the
+/// band reset for the next (every pixel made reset to the background,
+/// heads reset, every tag the background's).
+///
+/// A pixel tagged with a palette entry gets the entry's colour, toned
+/// once for the band (see `band::tags`); the others are resolved (the one
+/// rounding), toned and packed one by one; columns left and right of a
+/// row's drawn extent get the background's (`uniform`: the profile has
+/// one colour for it everywhere; else every column is made).
+fn tone_band<O: Copy, P, const C: usize>(
+    parts: &mut crate::band::FlushParts<'_, C>,
+    profile: &mut P,
+    uniform: bool,
+    out: &mut [O],
+    put: impl Fn(u32) -> O + Copy,
+) where
+    P: Profile<C>,
+    P::Color: RawColor,
+{
+    let band = parts.band;
     // The palette's colours, toned once; `known` marks the entries whose
     // colour does not depend on the position.
     let mut codes = [0u32; PALETTE];
@@ -404,19 +801,19 @@ where
     let n = tags::row_words(w);
     let bg_acc = parts.palette.entries().first().copied().unwrap_or([0; C]);
     let dense = parts.palette.dense;
-    let bg_code = codes[0] as i32;
+    let bg_code = put(codes[0]);
     for r in 0..rows {
         let y = band.y0 + r as i32;
         let mut drawn = parts.take_drawn(r);
         let row_words = r * n..r * n + n;
         let (Some(out), Some(words), Some(acc)) = (
-            parts.out.get_mut(r * w..r * w + w),
+            out.get_mut(r * w..r * w + w),
             parts.tags.get_mut(row_words),
             parts.acc.get_mut(r * w * C..(r + 1) * w * C),
         ) else {
             continue;
         };
-        if uniform.is_none() {
+        if !uniform {
             drawn = 0..band.width;
         }
         let drawn = usize::from(drawn.start)..usize::from(drawn.end);
@@ -437,25 +834,9 @@ where
             x0: band.x0,
             y,
         };
-        tone.row(out, words, acc, drawn, dense);
+        tone.row(out, words, acc, drawn, dense, put);
         words.fill(0);
     }
-    // Streamed and zeroed in one pass; what the target did not take is
-    // zeroed after.
-    let len = w * rows;
-    let out = parts.out.get_mut(..len).unwrap_or_default();
-    let mut taken = 0usize;
-    let sent = target.fill_contiguous(
-        &area,
-        out.iter_mut().map(|v| {
-            taken += 1;
-            D::Color::from_raw(core::mem::take(v) as u32)
-        }),
-    );
-    if let Some(rest) = out.get_mut(taken..) {
-        rest.fill(0);
-    }
-    sent
 }
 
 /// What toning a band row needs: the palette's colours (`known`: which of
@@ -482,16 +863,17 @@ where
     /// other pixels one by one. A dense band's (every tag `MIXED`) row is
     /// one run.
     #[inline(never)]
-    fn row(
+    fn row<O: Copy>(
         &self,
-        out: &mut [i32],
+        out: &mut [O],
         words: &[i32],
         acc: &mut [i32],
         drawn: core::ops::Range<usize>,
         dense: bool,
+        put: impl Fn(u32) -> O + Copy,
     ) {
         if dense {
-            self.mixed(out, acc, drawn.start, drawn.end);
+            self.mixed(out, acc, drawn.start, drawn.end, put);
             return;
         }
         let mut c = drawn.start;
@@ -506,13 +888,13 @@ where
                     while end + 4 <= drawn.end && words.get(end >> 2) == Some(&tags::MIXED_WORD) {
                         end += 4;
                     }
-                    self.mixed(out, acc, c, end);
+                    self.mixed(out, acc, c, end, put);
                     c = end;
                     continue;
                 }
                 let t = word as u8;
                 if word == tags::splat(t) && self.is_known(t) {
-                    let code = self.codes[usize::from(t) & (PALETTE - 1)] as i32;
+                    let code = put(self.codes[usize::from(t) & (PALETTE - 1)]);
                     if let Some(four) = out.get_mut(c..c + 4) {
                         four.fill(code);
                     }
@@ -532,7 +914,7 @@ where
             let t = (word >> ((c & 3) << 3)) as u8;
             let code = self.take(acc, t, c);
             if let Some(o) = out.get_mut(c) {
-                *o = code as i32;
+                *o = put(code);
             }
             c += 1;
         }
@@ -541,14 +923,21 @@ where
     /// The raw colours of pixels `c0..c1` from their values (every one
     /// resolved and toned), each reset to the background.
     #[inline(never)]
-    fn mixed(&self, out: &mut [i32], acc: &mut [i32], c0: usize, c1: usize) {
+    fn mixed<O: Copy>(
+        &self,
+        out: &mut [O],
+        acc: &mut [i32],
+        c0: usize,
+        c1: usize,
+        put: impl Fn(u32) -> O,
+    ) {
         let (Some(out), Some(acc)) = (out.get_mut(c0..c1), acc.get_mut(c0 * C..c1 * C)) else {
             return;
         };
         let mut x = self.x0.wrapping_add(c0 as i32);
         for (o, px) in out.iter_mut().zip(acc.chunks_exact_mut(C)) {
             if let Some(px) = px.first_chunk_mut::<C>() {
-                *o = self.profile.color(x, self.y, px.map(resolve)).to_raw() as i32;
+                *o = put(self.profile.color(x, self.y, px.map(resolve)).to_raw());
                 *px = self.bg;
             }
             x = x.wrapping_add(1);
@@ -829,6 +1218,156 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// A display that lends a buffer for each band ([`BandTarget`]) and
+    /// keeps what it is sent in raw bits; the buffer is scrambled after
+    /// each band, so every pixel of the next must be made again.
+    struct Lending<Col: PixelColor, R> {
+        shown: Capture<Col>,
+        buf: Vec<R>,
+        scramble: R,
+        /// The areas sent, and filled.
+        sent: Vec<Rectangle>,
+        filled: usize,
+    }
+
+    impl<Col: PixelColor, R: Copy> Lending<Col, R> {
+        fn new(w: u16, h: u16, len: usize, scramble: R) -> Self {
+            Self {
+                shown: Capture::new(w, h),
+                buf: vec![scramble; len],
+                scramble,
+                sent: Vec::new(),
+                filled: 0,
+            }
+        }
+    }
+
+    impl<Col: PixelColor, R> OriginDimensions for Lending<Col, R> {
+        fn size(&self) -> Size {
+            self.shown.size()
+        }
+    }
+
+    impl<Col: PixelColorRaw, R: RawPixel + Into<u32>> BandTarget for Lending<Col, R> {
+        type Color = Col;
+        type Raw = R;
+        type Error = core::convert::Infallible;
+        fn buffer(&mut self) -> &mut [R] {
+            &mut self.buf
+        }
+        fn send(&mut self, area: &Rectangle) -> Result<(), Self::Error> {
+            self.sent.push(*area);
+            let n = area.size.width as usize * area.size.height as usize;
+            for (p, &v) in area.points().zip(&self.buf[..n]) {
+                let k = p.y as usize * self.shown.w as usize + p.x as usize;
+                self.shown.px[k] = v.into();
+            }
+            self.buf.fill(self.scramble);
+            Ok(())
+        }
+        fn fill_solid(&mut self, area: &Rectangle, color: Col) -> Result<(), Self::Error> {
+            self.filled += 1;
+            self.shown.fill_solid(area, color)
+        }
+    }
+
+    /// Frames and windows rendered into a display that lends its band
+    /// buffer are those streamed to a `DrawTarget`, bit for bit (which
+    /// `check` holds to the reference), one send or fill per band over
+    /// the band's rectangle; a buffer shorter than a band is an error.
+    fn check_lent<const C: usize, Col, P, R>(profile: &P, bg: [u16; C], scramble: R)
+    where
+        Col: PixelColorRaw + crate::color::IntoLinear<C>,
+        P: Profile<C, Color = Col> + Clone,
+        R: RawPixel + Into<u32>,
+    {
+        let mut rng = Lcg(0x1e17_ba4d);
+        for case in 0..200u64 {
+            let (w, h) = (1 + rng.below(40) as u16, 1 + rng.below(30) as u16);
+            let rows = 1 + rng.below(9) as u16;
+            let seed = rng.next_u64();
+            let mut acc = vec![0; BandBuffer::<C>::acc_len(w, rows)];
+            let mut cover = vec![0; BandBuffer::<C>::cover_len(w, rows)];
+            let mut slots = [crate::canvas::WalkSlot::<C>::EMPTY; 4];
+            let mut r = Renderer::<C>::new(&mut acc, &mut cover, &mut slots, w, h, rows).unwrap();
+            let x0 = rng.below(u64::from(w)) as i32;
+            let y0 = rng.below(u64::from(h)) as i32;
+            let area = Rectangle::new(
+                Point::new(x0, y0),
+                Size::new(
+                    1 + rng.below(u64::from(w)) as u32,
+                    1 + rng.below(u64::from(h)) as u32,
+                ),
+            );
+            for window in [None, Some(area)] {
+                let mut streamed = Capture::<Col>::new(w, h);
+                let len = usize::from(w) * usize::from(rows);
+                let mut lent = Lending::<Col, R>::new(w, h, len + rng.below(3) as usize, scramble);
+                let (a, b) = match window {
+                    None => (
+                        r.render(
+                            &mut streamed,
+                            profile.clone(),
+                            bg,
+                            scene::<C, Col>(seed, w, h),
+                        ),
+                        r.render_lent(&mut lent, profile.clone(), bg, scene::<C, Col>(seed, w, h)),
+                    ),
+                    Some(area) => (
+                        r.render_window(
+                            &mut streamed,
+                            profile.clone(),
+                            bg,
+                            area,
+                            scene::<C, Col>(seed, w, h),
+                        ),
+                        r.render_window_lent(
+                            &mut lent,
+                            profile.clone(),
+                            bg,
+                            area,
+                            scene::<C, Col>(seed, w, h),
+                        ),
+                    ),
+                };
+                assert_eq!(a.unwrap(), b.unwrap(), "case {case}");
+                assert!(
+                    lent.shown.px == streamed.px,
+                    "case {case} {window:?}: {w}x{h} in bands of {rows}"
+                );
+                let bands = match window {
+                    None => crate::band::Bands::new(w, h, rows),
+                    Some(a) => r.window_bands(a).unwrap(),
+                };
+                let bands: Vec<_> = bands.map(band_area).collect();
+                assert_eq!(lent.sent.len() + lent.filled, bands.len(), "case {case}");
+                assert!(lent.sent.iter().all(|s| bands.contains(s)), "case {case}");
+            }
+            // A buffer a pixel short of a band (the frame's first).
+            let len = usize::from(w) * usize::from(rows.min(h));
+            let mut short = Lending::<Col, R>::new(w, h, len - 1, scramble);
+            let got = r.render_lent(&mut short, profile.clone(), bg, scene::<C, Col>(seed, w, h));
+            assert_eq!(
+                got.err(),
+                Some(RenderError::Buffer {
+                    needed: len,
+                    got: len - 1
+                }),
+                "case {case}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_lent_band_buffer_gets_the_streamed_pixels() {
+        static RGB565: Rgb565Format = Rgb565Format::new(Curve::Srgb);
+        static GRAY8: Gray8Format = Gray8Format::new(Curve::Srgb);
+        check_lent::<3, Rgb565, _, u16>(&&RGB565, [0; 3], 0xa5a5);
+        check_lent::<3, Rgb565, _, u32>(&&RGB565, [2000, 30, 4095], 0x5a5a_5a5a);
+        check_lent::<1, Gray8, _, u8>(&&GRAY8, [700], 0x5a);
+        check_lent::<1, _, _, u8>(&Bayer8::new(), [1234], 1);
     }
 
     /// A display that takes only the first pixels of each band it is

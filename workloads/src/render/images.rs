@@ -12,10 +12,10 @@ use embedded_graphics::prelude::*;
 use softedge::image::{format, AaImage, RawImage, Scale};
 use softedge::path::Degrees;
 use softedge::prelude::*;
-use softedge::tone::Curve;
 
 use super::softedge_side::{Buffers, FrameError};
 use super::targets::BandStream;
+use super::ui::{Frames, Lent};
 use crate::FRAME;
 
 /// Band height of the image frames.
@@ -112,15 +112,24 @@ impl Image {
     }
 }
 
-/// The display's tone stage: sRGB γ, Rgb565.
-static RGB565: Rgb565Format = Rgb565Format::new(Curve::Srgb);
-
 /// The icon's tint.
 const TINT: Rgb565 = Rgb565::new(31, 40, 6);
 
 /// A softedge frame of `image` alone, 16-row bands, into `bufs.out16`.
 #[inline(never)]
 pub fn softedge_image(image: Image, bufs: &mut Buffers<'_>) -> Result<(), FrameError> {
+    image_frame(image, bufs, false)
+}
+
+/// [`softedge_image`] with the one-band buffer lent for the band's pixels
+/// to be made in (`Renderer::render_lent`).
+pub fn softedge_image_lent(image: Image, bufs: &mut Buffers<'_>) -> Result<(), FrameError> {
+    image_frame(image, bufs, true)
+}
+
+/// One frame of `image` into `bufs.out16`: streamed, or `lent`.
+#[inline(never)]
+fn image_frame(image: Image, bufs: &mut Buffers<'_>, lent: bool) -> Result<(), FrameError> {
     let sprite = RawImage::<format::Rgb565>::new(&SPRITE, SPRITE_SIDE, SPRITE_SIDE)
         .map_err(|_| FrameError)?;
     let icon =
@@ -137,22 +146,24 @@ pub fn softedge_image(image: Image, bufs: &mut Buffers<'_>) -> Result<(), FrameE
     )
     .map_err(|_| FrameError)?;
     let centre = FinePoint::from_px(120, 120);
-    let report = r
-        .render(&mut sink, &RGB565, [0; 3], |c| match image {
-            Image::None => Ok(()),
-            Image::Copy64 => AaImage::new(&sprite).at(Point::new(88, 88)).draw(c),
-            Image::Rotated30 => AaImage::new(&sprite)
-                .center(centre)
-                .rotate(Degrees::new(30))
-                .draw(c),
-            Image::Icon48 => AaImage::new(&icon)
-                .center(centre)
-                .scale(Scale::from_int(2))
-                .tint(TINT)
-                .draw(c),
-        })
-        .map_err(|_| FrameError)?;
-    black_box(report);
+    let draw = |c: &mut softedge::canvas::Canvas<'_, '_, 3, Rgb565>| match image {
+        Image::None => Ok(()),
+        Image::Copy64 => AaImage::new(&sprite).at(Point::new(88, 88)).draw(c),
+        Image::Rotated30 => AaImage::new(&sprite)
+            .center(centre)
+            .rotate(Degrees::new(30))
+            .draw(c),
+        Image::Icon48 => AaImage::new(&icon)
+            .center(centre)
+            .scale(Scale::from_int(2))
+            .tint(TINT)
+            .draw(c),
+    };
+    if lent {
+        Lent(&mut sink).frame(&mut r, None, draw)?;
+    } else {
+        sink.frame(&mut r, None, draw)?;
+    }
     black_box(sink.pixels());
     Ok(())
 }

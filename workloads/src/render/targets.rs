@@ -156,6 +156,23 @@ where
     }
 }
 
+/// The same buffer lent for the band's pixels to be made in
+/// (`Renderer::render_lent`): the DMA's source, sent by the driver
+/// (here: nothing to do).
+impl softedge::render::BandTarget for BandStream<'_, Rgb565> {
+    type Color = Rgb565;
+    type Raw = u16;
+    type Error = Infallible;
+
+    fn buffer(&mut self) -> &mut [u16] {
+        self.px
+    }
+
+    fn send(&mut self, _area: &Rectangle) -> Result<(), Self::Error> {
+        Ok(())
+    }
+}
+
 /// Command bytes an ST7789 needs to open a window: CASET, RASET, RAMWR.
 pub const WINDOW_COMMAND_BYTES: u32 = 3;
 /// Parameter bytes of those commands: CASET and RASET 4 each (start and

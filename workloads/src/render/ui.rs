@@ -29,7 +29,7 @@ use embedded_graphics::primitives::{Arc, Circle, Polyline, PrimitiveStyle, Recta
 use softedge::canvas::ShapeEntry;
 use softedge::path::Segment;
 use softedge::prelude::*;
-use softedge::render::Renderer as FrameRenderer;
+use softedge::render::{BandTarget, Renderer as FrameRenderer};
 use softedge::tone::Curve;
 
 use super::softedge_side::{Buffers, FrameError};
@@ -171,6 +171,27 @@ pub fn softedge_shape(shape: Shape, bufs: &mut Buffers<'_>) -> Result<(), FrameE
     Ok(())
 }
 
+/// [`softedge_shape`] into the same buffer lent as the band's
+/// (`Renderer::render_lent`): the band's colours made in it, not
+/// streamed into it.
+#[inline(never)]
+pub fn softedge_shape_lent(shape: Shape, bufs: &mut Buffers<'_>) -> Result<(), FrameError> {
+    let out = &mut *bufs.out16;
+    let mut sink = BandStream::new(out, u32::from(FRAME), u32::from(FRAME));
+    let parts = Buffers {
+        acc: &mut *bufs.acc,
+        cover: &mut *bufs.cover,
+        out16: &mut [],
+        out8: &mut *bufs.out8,
+        slots3: &mut *bufs.slots3,
+        slots1: &mut *bufs.slots1,
+        list3: &mut *bufs.list3,
+    };
+    shape_into(shape, parts, &mut Lent(&mut sink))?;
+    black_box(sink.pixels());
+    Ok(())
+}
+
 /// Segments of the chart's shape cache: its stroke has 228, its
 /// description (kept to compare) 31.
 pub const CHART_SEGMENTS: usize = 288;
@@ -179,7 +200,7 @@ pub const CHART_SEGMENTS: usize = 288;
 /// described) outlines.
 fn shape_into<D>(shape: Shape, bufs: Buffers<'_>, target: &mut D) -> Result<(u32, u32), FrameError>
 where
-    D: DrawTarget<Color = Rgb565> + OriginDimensions,
+    D: Frames,
 {
     if shape == Shape::ChartCached {
         return chart_cached(bufs, target);
@@ -196,7 +217,7 @@ where
 #[inline(never)]
 fn chart_cached<D>(bufs: Buffers<'_>, target: &mut D) -> Result<(u32, u32), FrameError>
 where
-    D: DrawTarget<Color = Rgb565> + OriginDimensions,
+    D: Frames,
 {
     let mut segments = [Segment::ZERO; CHART_SEGMENTS];
     let mut entries = [ShapeEntry::EMPTY; 2];
@@ -212,22 +233,19 @@ fn shape_frame<D>(
     target: &mut D,
 ) -> Result<(u32, u32), FrameError>
 where
-    D: DrawTarget<Color = Rgb565> + OriginDimensions,
+    D: Frames,
 {
-    let report = r
-        .render(target, &RGB565, [0; 3], |c| match shape {
-            Shape::None => Ok(()),
-            Shape::Disc => disc().into_styled(AaStyle::with_fill(DISC_COLOR)).draw(c),
-            Shape::Gauge => gauge()
-                .into_styled(AaStyle::with_stroke(GAUGE_COLOR, GAUGE_STROKE))
-                .draw(c),
-            Shape::GaugeRound => gauge()
-                .into_styled(AaStyle::with_stroke(GAUGE_COLOR, GAUGE_STROKE).cap(LineCap::Round))
-                .draw(c),
-            Shape::Chart | Shape::ChartCached => chart().into_styled(chart_style()).draw(c),
-        })
-        .map_err(|_| FrameError)?;
-    black_box(report);
+    target.frame(r, None, |c| match shape {
+        Shape::None => Ok(()),
+        Shape::Disc => disc().into_styled(AaStyle::with_fill(DISC_COLOR)).draw(c),
+        Shape::Gauge => gauge()
+            .into_styled(AaStyle::with_stroke(GAUGE_COLOR, GAUGE_STROKE))
+            .draw(c),
+        Shape::GaugeRound => gauge()
+            .into_styled(AaStyle::with_stroke(GAUGE_COLOR, GAUGE_STROKE).cap(LineCap::Round))
+            .draw(c),
+        Shape::Chart | Shape::ChartCached => chart().into_styled(chart_style()).draw(c),
+    })?;
     Ok(r.shape_stats())
 }
 
@@ -321,7 +339,7 @@ pub fn softedge_scene<D>(
     target: &mut D,
 ) -> Result<(), FrameError>
 where
-    D: DrawTarget<Color = Rgb565> + OriginDimensions,
+    D: Frames,
 {
     let mut r = renderer(&mut *bufs.acc, &mut *bufs.cover, &mut *bufs.slots3)?;
     render_scene(&mut r, window, target, softedge_scene_band)
@@ -351,6 +369,15 @@ pub fn softedge_scene_stream(
     scene_stream(bufs, |b, sink| softedge_scene(window, b, sink))
 }
 
+/// [`softedge_scene_stream`] with the one-band buffer lent
+/// (`Renderer::render_lent`, `render_window_lent`).
+pub fn softedge_scene_lent(
+    window: Option<Rectangle>,
+    bufs: &mut Buffers<'_>,
+) -> Result<(), FrameError> {
+    scene_stream(bufs, |b, sink| softedge_scene(window, b, &mut Lent(sink)))
+}
+
 /// One frame of the scene by `r` into `target`, `band` drawing each band:
 /// the whole frame (`window` `None`, `Renderer::render`) or only `window`
 /// (`Renderer::render_window`).
@@ -361,16 +388,71 @@ fn render_scene<D, F>(
     band: F,
 ) -> Result<(), FrameError>
 where
-    D: DrawTarget<Color = Rgb565> + OriginDimensions,
+    D: Frames,
     F: FnMut(&mut Canvas<'_, '_, 3, Rgb565>) -> Result<(), DrawError>,
 {
-    let report = match window {
-        None => r.render(target, &RGB565, [0; 3], band),
-        Some(w) => r.render_window(target, &RGB565, [0; 3], w, band),
+    target.frame(r, window, band)
+}
+
+/// How a frame reaches the display: streamed to an embedded-graphics
+/// `DrawTarget` (`Renderer::render`, `render_window`), or made in the
+/// band buffer a [`Lent`] display lends (`Renderer::render_lent`,
+/// `render_window_lent`).
+pub trait Frames {
+    /// One frame of `band` by `r`, whole or only `window`.
+    fn frame<F>(
+        &mut self,
+        r: &mut FrameRenderer<'_, 3>,
+        window: Option<Rectangle>,
+        band: F,
+    ) -> Result<(), FrameError>
+    where
+        F: FnMut(&mut Canvas<'_, '_, 3, Rgb565>) -> Result<(), DrawError>;
+}
+
+impl<D: DrawTarget<Color = Rgb565> + OriginDimensions> Frames for D {
+    #[inline(always)]
+    fn frame<F>(
+        &mut self,
+        r: &mut FrameRenderer<'_, 3>,
+        window: Option<Rectangle>,
+        band: F,
+    ) -> Result<(), FrameError>
+    where
+        F: FnMut(&mut Canvas<'_, '_, 3, Rgb565>) -> Result<(), DrawError>,
+    {
+        let report = match window {
+            None => r.render(self, &RGB565, [0; 3], band),
+            Some(w) => r.render_window(self, &RGB565, [0; 3], w, band),
+        }
+        .map_err(|_| FrameError)?;
+        black_box(report);
+        Ok(())
     }
-    .map_err(|_| FrameError)?;
-    black_box(report);
-    Ok(())
+}
+
+/// A display that lends its band buffer (`softedge::render::BandTarget`).
+pub struct Lent<'t, T>(pub &'t mut T);
+
+impl<T: BandTarget<Color = Rgb565>> Frames for Lent<'_, T> {
+    #[inline(always)]
+    fn frame<F>(
+        &mut self,
+        r: &mut FrameRenderer<'_, 3>,
+        window: Option<Rectangle>,
+        band: F,
+    ) -> Result<(), FrameError>
+    where
+        F: FnMut(&mut Canvas<'_, '_, 3, Rgb565>) -> Result<(), DrawError>,
+    {
+        let report = match window {
+            None => r.render_lent(&mut *self.0, &RGB565, [0; 3], band),
+            Some(w) => r.render_window_lent(&mut *self.0, &RGB565, [0; 3], w, band),
+        }
+        .map_err(|_| FrameError)?;
+        black_box(report);
+        Ok(())
+    }
 }
 
 /// `scene` (one of this module's) into the one-band DMA buffer `bufs.out16`
@@ -432,7 +514,7 @@ pub fn softedge_scene_cached<D>(
     target: &mut D,
 ) -> Result<(u32, u32), FrameError>
 where
-    D: DrawTarget<Color = Rgb565> + OriginDimensions,
+    D: Frames,
 {
     let r = renderer(&mut *bufs.acc, &mut *bufs.cover, &mut *bufs.slots3)?;
     let mut r = r.with_shape_cache(&mut cache.segments, &mut cache.entries);
@@ -672,6 +754,64 @@ mod tests {
             } else {
                 assert_eq!(b, 0xffff, "{p:?} outside the window was sent");
             }
+        }
+    }
+
+    /// A 240x240 display that lends a band buffer of 16 rows and keeps
+    /// what each band sends (the buffer scrambled after each).
+    struct LentScreen {
+        frame: Screen,
+        band: Vec<u16>,
+    }
+
+    impl OriginDimensions for LentScreen {
+        fn size(&self) -> Size {
+            Size::new(240, 240)
+        }
+    }
+
+    impl BandTarget for LentScreen {
+        type Color = Rgb565;
+        type Raw = u16;
+        type Error = core::convert::Infallible;
+        fn buffer(&mut self) -> &mut [u16] {
+            &mut self.band
+        }
+        fn send(&mut self, area: &Rectangle) -> Result<(), Self::Error> {
+            for (p, &v) in area.points().zip(&self.band) {
+                self.frame.0[p.y as usize * 240 + p.x as usize] = v;
+            }
+            self.band.fill(0x5a5a);
+            Ok(())
+        }
+    }
+
+    /// Every shape frame, and the scene whole and in its window, made in
+    /// a lent band buffer are the frames streamed, bit for bit.
+    #[test]
+    fn lent_frames_are_the_streamed_frames() {
+        let mut s = Storage::new();
+        let lent = || LentScreen {
+            frame: Screen(vec![0xffff; 240 * 240]),
+            band: vec![0x5a5a; 240 * usize::from(BAND_ROWS)],
+        };
+        for shape in Shape::ALL {
+            let mut streamed = Screen(vec![0xffff; 240 * 240]);
+            shape_into(shape, s.bufs(), &mut streamed).unwrap();
+            let mut l = lent();
+            shape_into(shape, s.bufs(), &mut Lent(&mut l)).unwrap();
+            assert!(l.frame.0 == streamed.0, "{}", shape.name());
+        }
+        for window in [None, Some(DIRTY)] {
+            let mut streamed = Screen(vec![0xffff; 240 * 240]);
+            softedge_scene(window, &mut s.bufs(), &mut streamed).unwrap();
+            let mut l = lent();
+            softedge_scene(window, &mut s.bufs(), &mut Lent(&mut l)).unwrap();
+            assert!(l.frame.0 == streamed.0, "{window:?}");
+        }
+        assert!(softedge_scene_lent(None, &mut s.bufs()).is_ok());
+        for shape in Shape::ALL {
+            assert!(softedge_shape_lent(shape, &mut s.bufs()).is_ok());
         }
     }
 
