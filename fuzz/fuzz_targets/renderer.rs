@@ -504,6 +504,19 @@ impl Scene<'_> {
         alive: &[bool],
         shapes: Option<(&mut [Segment], &mut [ShapeEntry])>,
     ) -> Frame {
+        self.render_on(rows, slots, window, alive, shapes, false)
+    }
+
+    /// A fresh renderer's frame: streamed, or `lent`.
+    fn render_on(
+        &self,
+        rows: u16,
+        slots: usize,
+        window: Option<Rectangle>,
+        alive: &[bool],
+        shapes: Option<(&mut [Segment], &mut [ShapeEntry])>,
+        lent: bool,
+    ) -> Frame {
         let rows = rows.clamp(1, self.h);
         let mut acc = vec![0i32; BandBuffer::<3>::acc_len(self.w, rows)];
         let mut cover = vec![0i32; BandBuffer::<3>::cover_len(self.w, rows)];
@@ -513,7 +526,7 @@ impl Scene<'_> {
         if let Some((segments, entries)) = shapes {
             r = r.with_shape_cache(segments, entries);
         }
-        self.render_with(&mut r, window, alive, false)
+        self.render_with(&mut r, window, alive, lent)
     }
 
     /// [`render`](Self::render) into a display that lends its band
@@ -525,13 +538,7 @@ impl Scene<'_> {
         window: Option<Rectangle>,
         alive: &[bool],
     ) -> Frame {
-        let rows = rows.clamp(1, self.h);
-        let mut acc = vec![0i32; BandBuffer::<3>::acc_len(self.w, rows)];
-        let mut cover = vec![0i32; BandBuffer::<3>::cover_len(self.w, rows)];
-        let mut slot_store = vec![WalkSlot::<3>::EMPTY; slots];
-        let mut r = Renderer::new(&mut acc, &mut cover, &mut slot_store, self.w, self.h, rows)
-            .expect("a valid frame");
-        self.render_with(&mut r, window, alive, true)
+        self.render_on(rows, slots, window, alive, None, true)
     }
 
     /// One frame (or `window` of it) through renderer `r`, which the

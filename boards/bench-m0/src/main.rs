@@ -19,6 +19,7 @@
 //! redraw <renderer> <full|window> <instructions> <windows> <pixels> <SPI bytes>
 //! panel <band rows> <band buffer bytes> <whole|partial> <instructions>
 //! image <none|copy64|rotated30|icon48> <instructions> <image pixels>
+//! image_lent <none|copy64|rotated30|icon48> <instructions> <image pixels>
 //! dial_ram <slots> <slot bytes> <band buffer bytes> <DMA band bytes> <the frame's stack bytes> <instructions>
 //! dial_rows <band rows> <band buffer bytes> <DMA band bytes> <the frame's stack bytes> <instructions>
 //! stack_bytes <n>
@@ -28,7 +29,9 @@
 //! `shape` and `redraw` lines are the frames of
 //! `softedge_workloads::render::ui` (a circle, an arc gauge with butt and
 //! with round caps, a dial scene
-//! whole or in a dirty rectangle; `aa_rgb` is softedge, `eg_fill` and
+//! whole or in a dirty rectangle; `aa_rgb` is softedge, `aa_rgb_lent`
+//! softedge with the band buffer lent (`Renderer::render_lent`, as
+//! `image_lent` for the images), `eg_fill` and
 //! `eg_stock_fb` embedded-graphics); a `redraw` line's windows, pixels and
 //! bytes are what an SPI display is sent (`targets::SpiCounter`).
 //!

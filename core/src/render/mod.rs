@@ -189,8 +189,9 @@ pub trait BandTarget: OriginDimensions {
     type Error;
     /// The buffer the next band's pixels are made in: row after row, the
     /// band's width times its rows of them from the start (at least that
-    /// many, or the frame stops with [`RenderError::Buffer`]). Asked once
-    /// a band, after the band is drawn.
+    /// many, or the frame stops with [`RenderError::Buffer`]). Asked for
+    /// in every band after the band is drawn (its length, then the
+    /// buffer to fill); the same buffer each time, or another as long.
     fn buffer(&mut self) -> &mut [Self::Raw];
     /// Sends the pixels the buffer starts with to `area` of the display
     /// (`area.size.width * area.size.height` of them, row after row).
@@ -384,13 +385,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
         P: Profile<C, Color = D::Color>,
         F: FnMut(&mut Canvas<'_, '_, C, D::Color>) -> Result<(), E>,
     {
-        let size = target.size();
-        if u32::from(self.width) > size.width || u32::from(self.height) > size.height {
-            return Err(RenderError::Size {
-                frame: (self.width, self.height),
-                display: (size.width, size.height),
-            });
-        }
+        self.fits(target.size())?;
         let bands = Bands::new(self.width, self.height, self.band_rows);
         self.frame(
             Streamed(target),
@@ -452,13 +447,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
         P: Profile<C, Color = T::Color>,
         F: FnMut(&mut Canvas<'_, '_, C, T::Color>) -> Result<(), E>,
     {
-        let size = target.size();
-        if u32::from(self.width) > size.width || u32::from(self.height) > size.height {
-            return Err(RenderError::Size {
-                frame: (self.width, self.height),
-                display: (size.width, size.height),
-            });
-        }
+        self.fits(target.size())?;
         let bands = Bands::new(self.width, self.height, self.band_rows);
         self.frame(
             Lent(target),
@@ -472,7 +461,9 @@ impl<'a, const C: usize> Renderer<'a, C> {
     /// [`render_window`](Self::render_window) into a [`BandTarget`]: each
     /// band of the window made in the lent buffer (the window's width
     /// times the band's rows of it) and sent over the window's part of the
-    /// band.
+    /// band. A frame larger than the display is [`RenderError::Size`], as
+    /// for [`render_lent`](Self::render_lent): no area sent lies outside
+    /// the display.
     pub fn render_window_lent<T, P, B, E, F>(
         &mut self,
         target: &mut T,
@@ -487,6 +478,7 @@ impl<'a, const C: usize> Renderer<'a, C> {
         P: Profile<C, Color = T::Color>,
         F: FnMut(&mut Canvas<'_, '_, C, T::Color>) -> Result<(), E>,
     {
+        self.fits(target.size())?;
         let Some(bands) = self.window_bands(area) else {
             return Ok(FrameReport::default());
         };
@@ -497,6 +489,18 @@ impl<'a, const C: usize> Renderer<'a, C> {
             bands,
             draw,
         )
+    }
+
+    /// [`RenderError::Size`] if the frame is larger than a display of
+    /// `size`.
+    fn fits<T, E>(&self, size: Size) -> Result<(), RenderError<T, E>> {
+        if u32::from(self.width) > size.width || u32::from(self.height) > size.height {
+            return Err(RenderError::Size {
+                frame: (self.width, self.height),
+                display: (size.width, size.height),
+            });
+        }
+        Ok(())
     }
 
     /// The bands of window `area` clipped to the frame; `None` if nothing
@@ -1358,6 +1362,33 @@ mod tests {
                 "case {case}"
             );
         }
+    }
+
+    /// A frame larger than the lending display is an error, whole or in a
+    /// window (nothing sent).
+    #[test]
+    fn a_lent_frame_larger_than_the_display_is_an_error() {
+        static RGB565: Rgb565Format = Rgb565Format::new(Curve::Srgb);
+        let mut acc = vec![0; BandBuffer::<3>::acc_len(8, 4)];
+        let mut cover = vec![0; BandBuffer::<3>::cover_len(8, 4)];
+        let mut r = Renderer::<3>::new(&mut acc, &mut cover, &mut [], 8, 8, 4).unwrap();
+        let want = Some(RenderError::Size {
+            frame: (8, 8),
+            display: (7, 8),
+        });
+        let mut small = Lending::<Rgb565, u16>::new(7, 8, 64, 0);
+        let whole = r.render_lent(&mut small, &RGB565, [0; 3], scene::<3, Rgb565>(1, 8, 8));
+        assert_eq!(whole.err(), want);
+        let area = Rectangle::new(Point::new(0, 0), Size::new(2, 2));
+        let part = r.render_window_lent(
+            &mut small,
+            &RGB565,
+            [0; 3],
+            area,
+            scene::<3, Rgb565>(1, 8, 8),
+        );
+        assert_eq!(part.err(), want);
+        assert!(small.sent.is_empty() && small.filled == 0);
     }
 
     #[test]

@@ -153,29 +153,20 @@ impl Shape {
 }
 
 /// A softedge frame of `shape` alone, 16-row bands, into `bufs.out16`.
-#[inline(never)]
 pub fn softedge_shape(shape: Shape, bufs: &mut Buffers<'_>) -> Result<(), FrameError> {
-    let out = &mut *bufs.out16;
-    let mut sink = BandStream::new(out, u32::from(FRAME), u32::from(FRAME));
-    let parts = Buffers {
-        acc: &mut *bufs.acc,
-        cover: &mut *bufs.cover,
-        out16: &mut [],
-        out8: &mut *bufs.out8,
-        slots3: &mut *bufs.slots3,
-        slots1: &mut *bufs.slots1,
-        list3: &mut *bufs.list3,
-    };
-    shape_into(shape, parts, &mut sink)?;
-    black_box(sink.pixels());
-    Ok(())
+    shape_stream(shape, bufs, false)
 }
 
 /// [`softedge_shape`] into the same buffer lent as the band's
 /// (`Renderer::render_lent`): the band's colours made in it, not
 /// streamed into it.
-#[inline(never)]
 pub fn softedge_shape_lent(shape: Shape, bufs: &mut Buffers<'_>) -> Result<(), FrameError> {
+    shape_stream(shape, bufs, true)
+}
+
+/// A frame of `shape` into `bufs.out16`: streamed, or `lent`.
+#[inline(never)]
+fn shape_stream(shape: Shape, bufs: &mut Buffers<'_>, lent: bool) -> Result<(), FrameError> {
     let out = &mut *bufs.out16;
     let mut sink = BandStream::new(out, u32::from(FRAME), u32::from(FRAME));
     let parts = Buffers {
@@ -187,7 +178,11 @@ pub fn softedge_shape_lent(shape: Shape, bufs: &mut Buffers<'_>) -> Result<(), F
         slots1: &mut *bufs.slots1,
         list3: &mut *bufs.list3,
     };
-    shape_into(shape, parts, &mut Lent(&mut sink))?;
+    if lent {
+        shape_into(shape, parts, &mut Lent(&mut sink))?;
+    } else {
+        shape_into(shape, parts, &mut sink)?;
+    }
     black_box(sink.pixels());
     Ok(())
 }
