@@ -589,6 +589,18 @@ fn chart_polyline_strokes_cover_their_exact_outline_once() {
     println!("chart polyline strokes: worst relative area error {worst:.2e} (limit 5e-3)");
 }
 
+/// A union test's bar for one pixel against a reference of `lines`
+/// lines per pixel: 1/256 (the issue's bar); in debug builds, whose
+/// reference is coarser, that reference's own error on top.
+fn union_px_limit(lines: u32) -> f64 {
+    1.0 / 256.0
+        + if lines < 256 {
+            0.5 / f64::from(lines)
+        } else {
+            0.0
+        }
+}
+
 /// A polyline that crosses itself, folds back on itself (U-turns, segments
 /// shorter than the stroke is wide) and overlaps its own caps: the stroke
 /// is the union of its pieces however often they overlap (issue #36), in
@@ -604,14 +616,7 @@ fn self_crossing_polyline_strokes_cover_the_union_of_their_pieces() {
     let (mut worst, mut worst_px) = (0f64, 0f64);
     let cases = if cfg!(debug_assertions) { 20 } else { 100 };
     let lines = if cfg!(debug_assertions) { 64 } else { 256 };
-    // 1/256 (the issue's bar); in debug builds the coarser reference's
-    // own error on top.
-    let px_limit = 1.0 / 256.0
-        + if lines < 256 {
-            0.5 / f64::from(lines)
-        } else {
-            0.0
-        };
+    let px_limit = union_px_limit(lines);
     for k in 0..cases {
         let n = 3 + k % 5;
         let pts: Vec<FinePoint> = (0..n)
@@ -661,12 +666,7 @@ fn self_crossing_polygon_strokes_cover_the_union_of_their_pieces() {
     let (mut worst, mut worst_px) = (0f64, 0f64);
     let cases = if cfg!(debug_assertions) { 20 } else { 200 };
     let lines = if cfg!(debug_assertions) { 64 } else { 256 };
-    let px_limit = 1.0 / 256.0
-        + if lines < 256 {
-            0.5 / f64::from(lines)
-        } else {
-            0.0
-        };
+    let px_limit = union_px_limit(lines);
     for k in 0..cases {
         let n = 3 + k % 6;
         let pts: Vec<FinePoint> = if k % 4 == 0 {

@@ -672,14 +672,16 @@ where
     let area = band_area(band);
     let bg = buf.background();
     let mut parts = buf.flush_parts();
-    if let Some(color) = profile.uniform(bg) {
+    let uniform = profile.uniform(bg);
+    if let Some(color) = uniform {
         if parts.untouched() {
             return target.fill_solid(&area, color);
         }
     }
-    let uniform = profile.uniform(bg).is_some();
     let out = core::mem::take(&mut parts.out);
-    tone_band(&mut parts, profile, uniform, out, |code| code as i32);
+    tone_band(&mut parts, profile, uniform.is_some(), out, |code| {
+        code as i32
+    });
     let len = usize::from(band.width) * usize::from(band.rows);
     stream(out.get_mut(..len).unwrap_or_default(), &area, target)
 }
