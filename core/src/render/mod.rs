@@ -863,11 +863,14 @@ where
     P::Color: RawColor,
 {
     /// The raw colours of the row's pixels `drawn` into `out`, from their
-    /// tag `words` and accumulator `acc`, which is reset to the background:
-    /// four pixels of the background at a time (they hold it), four of one
-    /// known palette entry, runs of `MIXED` words in a loop of their own;
-    /// other pixels one by one. A dense band's (every tag `MIXED`) row is
-    /// one run.
+    /// tag `words` and accumulator `acc`, which is reset to the background,
+    /// a run of equal tag words at a time: a run of one known palette
+    /// entry (the background between shapes, a disc's inside) is one fill,
+    /// a run of `MIXED` words a loop of its own, other words pixel by
+    /// pixel. `drawn` is taken out to whole words: the pixels of a word
+    /// beside it are the background's, tagged so (untouched since the last
+    /// reset), and get its colour as the fill beside `drawn` gives them.
+    /// A dense band's (every tag `MIXED`) row is one run.
     #[inline(never)]
     fn row<O: Copy>(
         &self,
@@ -882,47 +885,53 @@ where
             self.mixed(out, acc, drawn.start, drawn.end, put);
             return;
         }
-        let mut c = drawn.start;
-        while c < drawn.end {
-            let Some(&word) = words.get(c >> 2) else {
-                return;
-            };
-            if c & 3 == 0 && c + 4 <= drawn.end {
-                if word == tags::MIXED_WORD {
-                    // The run of MIXED words from here.
-                    let mut end = c + 4;
-                    while end + 4 <= drawn.end && words.get(end >> 2) == Some(&tags::MIXED_WORD) {
-                        end += 4;
+        let w = out.len();
+        let end = drawn.end.min(w);
+        let Some(words) = words.get(..end.div_ceil(4)) else {
+            return;
+        };
+        let mut i = drawn.start >> 2;
+        while let Some((&word, rest)) = words.get(i..).and_then(|r| r.split_first()) {
+            let j = i + 1 + rest.iter().take_while(|&&v| v == word).count();
+            let (a, b) = (i * 4, (j * 4).min(w));
+            i = j;
+            let t = word as u8;
+            if word == tags::MIXED_WORD {
+                self.mixed(out, acc, a, b, put);
+            } else if word == tags::splat(t) && self.is_known(t) {
+                fill(
+                    out.get_mut(a..b).unwrap_or_default(),
+                    put(self.codes[usize::from(t) & (PALETTE - 1)]),
+                );
+                if t != 0 {
+                    // Stepped a chunk at a time: `chunks_exact` would
+                    // divide the length by `C`, a call on the Cortex-M0.
+                    let bg = self.bg;
+                    let mut px = acc.get_mut(a * C..b * C).unwrap_or_default();
+                    while let Some((p, rest)) =
+                        core::mem::take(&mut px).split_first_chunk_mut::<C>()
+                    {
+                        *p = bg;
+                        px = rest;
                     }
-                    self.mixed(out, acc, c, end, put);
-                    c = end;
-                    continue;
                 }
-                let t = word as u8;
-                if word == tags::splat(t) && self.is_known(t) {
-                    let code = put(self.codes[usize::from(t) & (PALETTE - 1)]);
-                    if let Some(four) = out.get_mut(c..c + 4) {
-                        four.fill(code);
-                    }
-                    if t != 0 {
-                        let mut px = acc.get_mut(c * C..(c + 4) * C).unwrap_or_default();
-                        while let Some((p, rest)) =
-                            core::mem::take(&mut px).split_first_chunk_mut::<C>()
-                        {
-                            *p = self.bg;
-                            px = rest;
-                        }
-                    }
-                    c += 4;
+            } else {
+                // Words of different tags (at an edge): pixel by pixel.
+                let (Some(out), Some(px)) = (out.get_mut(a..b), acc.get_mut(a * C..b * C)) else {
                     continue;
+                };
+                let (mut tags, mut px) = (word as u32, px);
+                let mut x = self.x0.wrapping_add(a as i32);
+                for o in out {
+                    let Some((p, rest)) = core::mem::take(&mut px).split_first_chunk_mut::<C>()
+                    else {
+                        break;
+                    };
+                    *o = put(self.take(p, tags as u8, x));
+                    // The run's words are all `word`: rotated, not shifted.
+                    (tags, px, x) = (tags.rotate_right(8), rest, x.wrapping_add(1));
                 }
             }
-            let t = (word >> ((c & 3) << 3)) as u8;
-            let code = self.take(acc, t, c);
-            if let Some(o) = out.get_mut(c) {
-                *o = put(code);
-            }
-            c += 1;
         }
     }
 
@@ -956,37 +965,38 @@ where
         (t as usize) < PALETTE && self.known >> t & 1 != 0
     }
 
-    /// The raw colour of pixel `c`, tagged `t`: its entry's if known, else
-    /// its value resolved (the one rounding) and toned at its place; its
-    /// accumulator reset to the background (the background's pixels hold
-    /// it already).
+    /// The raw colour of pixel value `px` at column `x`, tagged `t`: its
+    /// entry's if known, else its value resolved (the one rounding) and
+    /// toned at its place; the value reset to the background (the
+    /// background's pixels hold it already).
     #[inline(always)]
-    fn take(&self, acc: &mut [i32], t: u8, c: usize) -> u32 {
-        let Some(px) = acc
-            .get_mut(c * C..c * C + C)
-            .and_then(|p| p.first_chunk_mut::<C>())
-        else {
-            return 0;
-        };
-        if t == 0 && self.is_known(0) {
-            return self.codes[0];
-        }
+    fn take(&self, px: &mut [i32; C], t: u8, x: i32) -> u32 {
         let code = if self.is_known(t) {
+            if t == 0 {
+                return self.codes[0];
+            }
             self.codes[usize::from(t) & (PALETTE - 1)]
         } else {
-            self.pixel(px, c)
+            self.profile.color(x, self.y, resolve_px(px)).to_raw()
         };
         *px = self.bg;
         code
     }
+}
 
-    /// The raw colour of value `px` at pixel `c`: resolved (the one
-    /// rounding), toned at its place.
-    #[inline(always)]
-    fn pixel(&self, px: &[i32; C], c: usize) -> u32 {
-        self.profile
-            .color(self.x0.wrapping_add(c as i32), self.y, resolve_px(px))
-            .to_raw()
+/// `v` into every element of `run`, eight stores a loop (a slice's
+/// `fill` of a 16-bit value compares after every store on the
+/// Cortex-M0).
+#[inline(always)]
+fn fill<O: Copy>(run: &mut [O], v: O) {
+    let mut eights = run.chunks_exact_mut(8);
+    for e in &mut eights {
+        if let Ok(e) = <&mut [O; 8]>::try_from(e) {
+            *e = [v; 8];
+        }
+    }
+    for o in eights.into_remainder() {
+        *o = v;
     }
 }
 
@@ -1232,10 +1242,16 @@ mod tests {
                 let mut shown = Capture::<Col>::new(w, h);
                 r.render(&mut shown, profile.clone(), bg, scene::<C, Col>(seed, w, h))
                     .unwrap();
-                assert!(
-                    shown.px == want,
-                    "case {case} frame {frame}: {w}x{h} in bands of {rows}"
-                );
+                if shown.px != want {
+                    let i = (0..want.len()).find(|&i| shown.px[i] != want[i]).unwrap();
+                    panic!(
+                        "case {case} frame {frame}: {w}x{h} in bands of {rows}: pixel ({}, {}) {:#x} != {:#x}",
+                        i % usize::from(w),
+                        i / usize::from(w),
+                        shown.px[i],
+                        want[i]
+                    );
+                }
             }
         }
     }
