@@ -323,11 +323,15 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         self.background = bg;
         let fill = bg.map(|b| i32::from(b) << COVER_BITS);
         self.palette = Palette::new(fill);
-        let n = Self::acc_len(self.band.width, self.band.rows);
-        let mut acc = self.acc.get_mut(..n).unwrap_or_default();
-        while let Some((px, rest)) = core::mem::take(&mut acc).split_first_chunk_mut::<C>() {
-            *px = fill;
-            acc = rest;
+        // Every pixel tagged the background, which is its value; a dense
+        // band's (one channel) accumulator holds it too (see `band::tags`).
+        if self.palette.dense {
+            let n = Self::acc_len(self.band.width, self.band.rows);
+            let mut acc = self.acc.get_mut(..n).unwrap_or_default();
+            while let Some((px, rest)) = core::mem::take(&mut acc).split_first_chunk_mut::<C>() {
+                *px = fill;
+                acc = rest;
+            }
         }
         self.tags.fill(0);
         for r in 0..usize::from(self.band.rows) {
@@ -337,10 +341,19 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         }
     }
 
-    /// The accumulator of band pixel `(r, c)`.
+    /// The value of band pixel `(r, c)`: its palette entry's when it is
+    /// tagged with one, else its accumulator (see `band::tags`).
     #[inline]
     fn value(&self, r: usize, c: usize) -> Option<[i32; C]> {
-        let k = (r * usize::from(self.band.width) + c) * C;
+        let w = usize::from(self.band.width);
+        if !self.palette.dense {
+            let n = tags::row_words(w);
+            let t = tags::get(self.tags.get(r * n..r * n + n)?, c);
+            if let Some(v) = self.palette.entries().get(usize::from(t)) {
+                return Some(*v);
+            }
+        }
+        let k = (r * w + c) * C;
         self.acc.get(k..k + C)?.first_chunk::<C>().copied()
     }
 
@@ -415,20 +428,50 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
         if let Some(t) = self.palette.intern(f) {
             return t;
         }
-        self.tags.fill(tags::MIXED_WORD);
-        self.palette.dense = true;
+        self.go_dense();
         MIXED
     }
 
-    /// Tags pixel `(r, c)` `MIXED` (its accumulator was changed), unless
-    /// the band is dense.
+    /// True when the band keeps no tags (see `band::tags`).
+    #[cfg(test)]
+    pub(crate) fn is_dense(&self) -> bool {
+        self.palette.dense
+    }
+
+    /// Makes the band dense: every pixel's value into its accumulator,
+    /// then every tag `MIXED`, for good (see `band::tags`).
+    pub(crate) fn go_dense(&mut self) {
+        if self.palette.dense {
+            return;
+        }
+        let w = usize::from(self.band.width);
+        let n = tags::row_words(w);
+        for r in 0..usize::from(self.band.rows) {
+            if let (Some(acc), Some(words)) = (
+                self.acc.get_mut(r * w * C..(r + 1) * w * C),
+                self.tags.get(r * n..r * n + n),
+            ) {
+                tags::materialise(acc, words, self.palette.entries(), 0, w);
+            }
+        }
+        self.tags.fill(tags::MIXED_WORD);
+        self.palette.dense = true;
+    }
+
+    /// Makes pixel `(r, c)`'s accumulator its value and tags it `MIXED`
+    /// (it is about to be changed there), unless the band is dense.
     #[inline]
     fn set_mixed(&mut self, r: usize, c: usize) {
         if self.palette.dense {
             return;
         }
-        let n = tags::row_words(usize::from(self.band.width));
-        if let Some(words) = self.tags.get_mut(r * n..r * n + n) {
+        let w = usize::from(self.band.width);
+        let n = tags::row_words(w);
+        if let (Some(words), Some(acc)) = (
+            self.tags.get_mut(r * n..r * n + n),
+            self.acc.get_mut(r * w * C..(r + 1) * w * C),
+        ) {
+            tags::materialise(acc, words, self.palette.entries(), c, c + 1);
             tags::set_mixed(words, c);
         }
     }
@@ -511,8 +554,10 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
     /// A buffer for the next band of a frame over the storage the previous
     /// band of the same width and rows used (the layout of the scratch
     /// depends on both), which its flush left clean (no changes, every
-    /// pixel the background `background` and tagged so, the heads reset):
-    /// nothing is cleared here. For the renderer, which knows all that.
+    /// pixel tagged the background `background`, the heads reset; the
+    /// accumulator of a band that went dense, as a one-channel band starts,
+    /// the background too): nothing is cleared here. For the renderer,
+    /// which knows all that.
     #[inline(always)]
     pub(crate) fn reuse(
         acc: &'a mut [i32],
@@ -571,7 +616,7 @@ fn mark_extent(dlo: &mut i32, dhi: &mut i32, lo: usize, hi: usize) {
 }
 
 /// A band taken apart to be sent ([`BandBuffer::flush_parts`]): its
-/// accumulator (the flush resets what it sends to the background), the
+/// accumulator (the flush resets a dense band's to the background), the
 /// run of its rows' changes (all zero: the flush writes the band's colours
 /// there, then zeroes it again), the rows' heads (the drawn extents), the
 /// tags and the palette.
@@ -890,16 +935,20 @@ impl<const C: usize> crate::edge::CoverSink for BandBuffer<'_, C> {
 /// changes, their column extent `lo..=hi` (`0 <= lo <= hi < w`: events
 /// were clamped into the band at insertion), the row's drawn extent to
 /// widen, its accumulator and its tags.
-pub(crate) struct SweepRow<'r> {
+pub(crate) struct SweepRow<'r, const C: usize> {
     pub(crate) deltas: &'r mut [i32],
     pub(crate) acc: &'r mut [i32],
     pub(crate) tags: &'r mut [i32],
+    /// The band's palette entries (a tagged pixel's value), and whether
+    /// the band is dense (no tags).
+    pub(crate) palette: &'r [[i32; C]],
+    pub(crate) dense: bool,
     pub(crate) lo: usize,
     pub(crate) hi: usize,
     drawn: (&'r mut i32, &'r mut i32),
 }
 
-impl SweepRow<'_> {
+impl<const C: usize> SweepRow<'_, C> {
     /// Widens the row's drawn extent by columns `lo..hi`.
     pub(crate) fn mark(&mut self, lo: usize, hi: usize) {
         mark_extent(self.drawn.0, self.drawn.1, lo, hi);
@@ -916,16 +965,18 @@ pub(crate) struct SweepRows<'b, const C: usize> {
     heads: &'b mut [i32],
     acc: &'b mut [i32],
     tags: &'b mut [i32],
+    palette: &'b [[i32; C]],
+    dense: bool,
     y: i32,
     left: usize,
     w: usize,
 }
 
 impl<'b, const C: usize> Iterator for SweepRows<'b, C> {
-    type Item = (i32, SweepRow<'b>);
+    type Item = (i32, SweepRow<'b, C>);
 
     #[inline]
-    fn next(&mut self) -> Option<(i32, SweepRow<'b>)> {
+    fn next(&mut self) -> Option<(i32, SweepRow<'b, C>)> {
         let w = self.w;
         let n = tags::row_words(w);
         while self.left > 0 {
@@ -952,6 +1003,8 @@ impl<'b, const C: usize> Iterator for SweepRows<'b, C> {
                     deltas,
                     acc,
                     tags,
+                    palette: self.palette,
+                    dense: self.dense,
                     lo: l.max(0) as usize,
                     hi: (h.max(0) as usize).min(w - 1),
                     drawn: (dlo, dhi),
@@ -976,6 +1029,8 @@ impl<const C: usize> BandBuffer<'_, C> {
             heads: self.heads.get_mut(first * ROW_HEAD..).unwrap_or_default(),
             acc: self.acc.get_mut(first * w * C..).unwrap_or_default(),
             tags: self.tags.get_mut(first * n..).unwrap_or_default(),
+            palette: self.palette.entries(),
+            dense: self.palette.dense,
             y: rows.start,
             left: usize::try_from(rows.end - rows.start).unwrap_or(0),
             w,

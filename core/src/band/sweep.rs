@@ -233,19 +233,18 @@ impl<const C: usize> BandBuffer<'_, C> {
                 k
             }
         };
-        let dense = self.palette.dense;
         for (y, mut row) in self.sweep_rows(y_lo, y_hi) {
-            let (lo, hi) = (row.lo, row.hi);
+            let (lo, hi, dense) = (row.lo, row.hi, row.dense);
             let Some(changes) = row.deltas.get_mut(lo..=hi) else {
                 continue;
             };
             let x = x0.saturating_add(lo as i32);
-            let mut pixels = RowPixels { acc: &mut *row.acc };
+            let mut pixels = RowPixels {
+                acc: &mut *row.acc,
+                tags: (!dense).then_some((&mut *row.tags, row.palette)),
+            };
             let (first, last) = sweep_row(op, changes, &mut pixels, lo, w, (x, y), &factor);
             if first < last {
-                if !dense {
-                    tags::fill(row.tags, lo + first, lo + last, MIXED);
-                }
                 row.mark(lo + first, lo + last);
             }
         }
@@ -278,6 +277,7 @@ impl<const C: usize> BandBuffer<'_, C> {
                 words: &mut *row.tags,
                 lo,
                 tag,
+                palette: row.palette,
             };
             let tail = w - lo;
             let f = &flat.f;
@@ -394,10 +394,9 @@ impl<const C: usize> BandBuffer<'_, C> {
                 }
                 first = first.min(x);
                 if s == COVER_ONE {
-                    // Whole pixels to the next change: the colour.
+                    // Whole pixels to the next change: the colour's tag.
                     let rest = changes.get(i..).unwrap_or_default();
                     let k = rest.iter().position(|&d| d != 0).unwrap_or(rest.len());
-                    store(acc, x, k + 1, &f);
                     tags::fill(words, x, x + k + 1, tag);
                     i += k;
                     last = x + k + 1;
@@ -411,7 +410,6 @@ impl<const C: usize> BandBuffer<'_, C> {
             if s != 0 {
                 first = first.min(hi + 1);
                 if s == COVER_ONE {
-                    store(acc, hi + 1, w.saturating_sub(hi + 1), &f);
                     tags::fill(words, hi + 1, w, tag);
                 } else {
                     for x in hi + 1..w {
@@ -469,11 +467,15 @@ impl<const C: usize> MaskBlend<C> {
         let slot = (key.wrapping_mul(0x9e37_79b1) >> 26) as usize & (MEMO - 1);
         if self.keys.get(slot) == Some(&key) {
             let b = self.tags.get(slot).copied().unwrap_or(MIXED);
-            if let Some(e) = palette.entries().get(usize::from(b)) {
-                *p = *e;
+            if usize::from(b) < palette.len() {
+                // The blend's entry is its value (see `band::tags`).
                 *word = (*word & !(0xff << shift)) | (i32::from(b) << shift);
                 return;
             }
+        }
+        // The value below is the entry's (the accumulator may hold another).
+        if let Some(v) = palette.entries().get(usize::from(t)) {
+            *p = *v;
         }
         blend_over(p, &self.f, s);
         let room = palette.len() + MEMO_RESERVE < tags::PALETTE;
@@ -500,21 +502,37 @@ pub(super) struct Flat<const C: usize> {
 
 impl<const C: usize> Flat<C> {
     /// Pixels `c0..c1` of a row (its accumulator and tags) wholly covered
-    /// by `f`: stored, and tagged with its entry.
+    /// by `f`: tagged with its entry, or in a dense band stored.
     pub(super) fn whole(&self, acc: &mut [i32], words: &mut [i32], c0: usize, c1: usize) {
-        store(acc, c0, c1.saturating_sub(c0), &self.f);
-        if !self.dense {
+        if self.dense {
+            store(acc, c0, c1.saturating_sub(c0), &self.f);
+        } else {
             tags::fill(words, c0, c1, self.tag);
         }
     }
 }
 
 /// A row's tags as an opaque flat over keeps them: the row's tag words,
-/// the column where the pixels given start, and the colour's tag.
-pub(super) struct RowTags<'w> {
+/// the column where the pixels given start, the colour's tag and the
+/// band's palette (a tagged pixel's value).
+pub(super) struct RowTags<'w, const C: usize> {
     words: &'w mut [i32],
     lo: usize,
     tag: u8,
+    palette: &'w [[i32; C]],
+}
+
+impl<const C: usize> RowTags<'_, C> {
+    /// Row pixel `c`'s value into its accumulator `p` (from its entry when
+    /// it is tagged with one), and its tag `MIXED`: it is about to be
+    /// blended.
+    #[inline(always)]
+    fn take(&mut self, p: &mut [i32; C], c: usize) {
+        if let Some(v) = self.palette.get(usize::from(tags::get(self.words, c))) {
+            *p = *v;
+        }
+        tags::set_mixed(self.words, c);
+    }
 }
 
 /// One row of an opaque flat over (see [`sweep_row`]): the share of a
@@ -537,7 +555,7 @@ fn over_flat_row<const C: usize, const SIGNED: bool, const TAGS: bool, const GAP
     px: &mut [i32],
     tail: usize,
     signed: bool,
-    tags: &mut RowTags<'_>,
+    tags: &mut RowTags<'_, C>,
 ) -> (usize, usize) {
     let n = changes.len();
     let mut c: i32 = 0;
@@ -566,11 +584,15 @@ fn over_flat_row<const C: usize, const SIGNED: bool, const TAGS: bool, const GAP
             // pixels, stepped a chunk at a time (a loop bounded by the
             // pixels left would make the compiler divide their count by
             // C, a library call on the Cortex-M0), and tagged.
+            // With a tag the run's pixels are only tagged (the tag is
+            // their value; see `band::tags`), else stored.
             if GAPS {
                 // Long runs (a disc's interior): four changes at a time,
                 // two pixels at a time.
                 let k = next_change(changes, i) - i;
-                store_long(px, at, k + 1, f);
+                if !TAGS || tags.tag == MIXED {
+                    store_long(px, at, k + 1, f);
+                }
                 if TAGS {
                     tags::fill(tags.words, tags.lo + at, tags.lo + at + k + 1, tags.tag);
                 }
@@ -579,7 +601,9 @@ fn over_flat_row<const C: usize, const SIGNED: bool, const TAGS: bool, const GAP
             }
             let rest = changes.get(i..).unwrap_or_default();
             let k = rest.iter().position(|&d| d != 0).unwrap_or(rest.len());
-            store(px, at, k + 1, f);
+            if !TAGS || tags.tag == MIXED {
+                store(px, at, k + 1, f);
+            }
             if TAGS {
                 tags::fill(tags.words, tags.lo + at, tags.lo + at + k + 1, tags.tag);
             }
@@ -589,10 +613,10 @@ fn over_flat_row<const C: usize, const SIGNED: bool, const TAGS: bool, const GAP
                 .get_mut(at * C..at * C + C)
                 .and_then(|p| p.first_chunk_mut::<C>())
             {
-                blend_over(p, f, s);
                 if TAGS {
-                    tags::set_mixed(tags.words, tags.lo + at);
+                    tags.take(p, tags.lo + at);
                 }
+                blend_over(p, f, s);
             }
         } else if GAPS {
             // No coverage (a ring's middle, between a glyph's strokes): to
@@ -604,18 +628,21 @@ fn over_flat_row<const C: usize, const SIGNED: bool, const TAGS: bool, const GAP
     if s != 0 {
         // Coverage left after the last change runs to the band's end.
         if s == COVER_ONE {
-            store(px, n, tail.saturating_sub(n), f);
+            if !TAGS || tags.tag == MIXED {
+                store(px, n, tail.saturating_sub(n), f);
+            }
             if TAGS {
                 tags::fill(tags.words, tags.lo + n, tags.lo + tail, tags.tag);
             }
         } else {
-            let mut rest = px.get_mut(n * C..).unwrap_or_default();
+            let mut rest = px.get_mut(n * C..tail * C).unwrap_or_default();
+            let mut c = tags.lo + n;
             while let Some((p, more)) = core::mem::take(&mut rest).split_first_chunk_mut::<C>() {
+                if TAGS {
+                    tags.take(p, c);
+                }
                 blend_over(p, f, s);
-                rest = more;
-            }
-            if TAGS {
-                tags::fill(tags.words, tags.lo + n, tags.lo + tail, MIXED);
+                (rest, c) = (more, c + 1);
             }
         }
         (0, n.max(tail))
@@ -695,18 +722,22 @@ pub(super) const WHOLE: i32 = i32::MAX;
 pub(super) const SKIP: i32 = i32::MIN;
 
 /// A band row's pixels as a sweep composes them: the accumulator of the
-/// whole row. Their tags are set `MIXED` by the sweep's caller over the
-/// drawn extent [`sweep_row`] returns, once a row (a pixel of that extent
-/// left unchanged is `MIXED` too, which only sends it resolved: the
-/// accumulator is the value; see `band::tags`).
+/// whole row, and (unless the band is dense) its tags and the palette.
 pub(super) struct RowPixels<'r, const C: usize> {
     pub(super) acc: &'r mut [i32],
+    pub(super) tags: Option<(&'r mut [i32], &'r [[i32; C]])>,
 }
 
 impl<const C: usize> RowPixels<'_, C> {
-    /// The accumulator of pixels `c0..c1`, to be changed.
+    /// The accumulator of pixels `c0..c1`, to be changed: their values
+    /// (a tagged pixel's from its entry), tagged `MIXED` (see
+    /// `band::tags`).
     #[inline]
     pub(super) fn take(&mut self, c0: usize, c1: usize) -> &mut [i32] {
+        if let Some((words, palette)) = &mut self.tags {
+            tags::materialise(self.acc, words, palette, c0, c1);
+            tags::fill(words, c0, c1, MIXED);
+        }
         self.acc.get_mut(c0 * C..c1 * C).unwrap_or_default()
     }
 }
@@ -1108,13 +1139,13 @@ mod tests {
 
     /// `over_flat_row` against a reference written out here (running
     /// coverage, its share, `p + floor((f - p) s / 2^16)` in 64 bits): the
-    /// values it leaves, tags that stay true (a pixel tagged with an entry
-    /// holds exactly that entry's value), the changes it clears, and a
-    /// drawn extent that holds every pixel it changed (the flush resolves
-    /// only those). Rows start with pixels tagged with random palette
-    /// entries (holding their values) or `MIXED` with random values; the
-    /// colour has a tag or (palette full) none; the band keeps tags or is
-    /// dense.
+    /// values it leaves (a pixel tagged with an entry has that entry's
+    /// value, whatever its accumulator holds), the changes it clears, and
+    /// a drawn extent that holds every pixel it changed (the flush
+    /// resolves only those). Rows start with pixels tagged with random
+    /// palette entries (their accumulators holding other values) or
+    /// `MIXED` with random values; the colour has a tag or (palette full)
+    /// none; the band keeps tags or is dense.
     #[test]
     fn over_flat_rows_match_the_reference_and_mark_every_drawn_pixel() {
         const C: usize = 3;
@@ -1156,11 +1187,20 @@ mod tests {
                     if rng.below(2) == 0 {
                         let t = rng.below(palette.len() as u64) as u8;
                         tags::set(&mut words, x, t);
-                        acc[x * C..x * C + C].copy_from_slice(palette.value(t).unwrap());
                     }
                 }
             }
-            let before = acc.clone();
+            // The pixels' values: a tagged one's its entry's.
+            let values = |acc: &[i32], words: &[i32], palette: &tags::Palette<C>| {
+                let mut v = acc.to_vec();
+                for x in 0..w {
+                    if let Some(e) = palette.value(tags::get(words, x)) {
+                        v[x * C..x * C + C].copy_from_slice(e);
+                    }
+                }
+                v
+            };
+            let before = values(&acc, &words, &palette);
             let f: [i32; C] = core::array::from_fn(|_| rng.below(4096) as i32 * COVER_ONE);
             // The reference.
             let mut want = before.clone();
@@ -1184,10 +1224,12 @@ mod tests {
                 palette.intern(&f).unwrap_or(MIXED)
             };
             let mut ch_buf = changes.clone();
+            let entries = palette.entries().to_vec();
             let mut t = RowTags {
                 words: &mut words,
                 lo,
                 tag,
+                palette: &entries,
             };
             let px = &mut acc[lo * C..];
             let tail = w - lo;
@@ -1218,13 +1260,11 @@ mod tests {
                     over_flat_row::<C, false, false, true>(&f, &mut ch_buf, px, tail, false, &mut t)
                 }
             };
-            assert_eq!(acc, want, "case {case}: {changes:?}");
+            let after = values(&acc, &words, &palette);
+            assert_eq!(after, want, "case {case}: {changes:?}");
             assert!(ch_buf.iter().all(|&d| d == 0), "case {case}");
             for x in 0..w {
-                if let Some(v) = palette.value(tags::get(&words, x)) {
-                    assert_eq!(&acc[x * C..x * C + C], v, "case {case}: pixel {x}'s tag");
-                }
-                if acc[x * C..x * C + C] != before[x * C..x * C + C] {
+                if after[x * C..x * C + C] != before[x * C..x * C + C] {
                     assert!(
                         lo + first <= x && x < lo + last,
                         "case {case}: pixel {x} drawn outside {first}..{last} (+{lo})"

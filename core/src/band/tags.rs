@@ -3,20 +3,24 @@
 //!
 //! In a user interface most pixels of a band end up wholly covered by one
 //! opaque flat colour (the background, a panel, a disc's inside): their
-//! accumulator holds exactly that colour's `lin12 * 2^16` per channel.
-//! Beside its accumulator, every pixel keeps a one-byte *tag*: the index of
-//! its value in the band's [`Palette`] (at most [`PALETTE`] exact
-//! accumulator values per band, the background first), or [`MIXED`] when
-//! its value is anything else (an edge, a translucent composite, a Gouraud
-//! plane). So the flush gives a tagged pixel its entry's colour, toned
-//! once for the band, and resolves only the `MIXED` ones.
+//! value is exactly that colour's `lin12 * 2^16` per channel. Beside its
+//! accumulator, every pixel keeps a one-byte *tag*: the index of its value
+//! in the band's [`Palette`] (at most [`PALETTE`] exact accumulator values
+//! per band, the background first), or [`MIXED`] when its value is
+//! anything else (an edge, a translucent composite, a Gouraud plane). So
+//! the flush gives a tagged pixel its entry's colour, toned once for the
+//! band, and resolves only the `MIXED` ones.
 //!
-//! The accumulator is always the pixel's value; a tag only says that it
-//! equals a palette entry. Whoever writes a pixel keeps its tag true: an
-//! opaque flat span tags its pixels with its colour's entry (a byte fill,
-//! four pixels a word), every other composite tags what it changes
-//! `MIXED`. Nothing is rounded differently: the bits of every frame are
-//! the accumulator's.
+//! The tag is the truth: a pixel tagged with an entry has that entry's
+//! value, whatever its accumulator holds (an opaque flat span only fills
+//! tags, a byte a pixel, four a word: no accumulator store on the way in,
+//! no reset on the way out); only a `MIXED` pixel's accumulator is its
+//! value. Whoever reads a tagged pixel's value takes the entry's (a blend
+//! at an edge, a gradient over a panel: [`materialise`] before the
+//! composite), and tags what it changes `MIXED`. A *dense* band (see
+//! [`Palette`]) has every tag `MIXED`: its accumulator is every pixel's
+//! value. Nothing is rounded differently: the bits of every frame are
+//! those of the values.
 //!
 //! Tags are packed four to an `i32` word of the caller's `cover` slice,
 //! little end first (pixel `c` of a row in word `c / 4`, bits
@@ -41,12 +45,46 @@ pub(crate) const fn splat(t: u8) -> i32 {
     (t as u32).wrapping_mul(0x0101_0101) as i32
 }
 
-/// The tag of pixel `c` of a row's tag words.
-#[cfg(test)]
+/// The tag of pixel `c` of a row's tag words (`MIXED` past the row).
+#[inline(always)]
 pub(crate) fn get(words: &[i32], c: usize) -> u8 {
     words
         .get(c >> 2)
         .map_or(MIXED, |&w| (w >> ((c & 3) << 3)) as u8)
+}
+
+/// Gives pixels `c0..c1` of a row (its accumulator `acc`, `C` values a
+/// pixel, and tag `words`) that are tagged with a palette entry the
+/// entry's value (`entries`) in the accumulator, so that a composite may
+/// read it there; their tags are left as they are. Words of four `MIXED`
+/// tags are passed over whole.
+#[inline(never)]
+pub(crate) fn materialise<const C: usize>(
+    acc: &mut [i32],
+    words: &[i32],
+    entries: &[[i32; C]],
+    c0: usize,
+    c1: usize,
+) {
+    let mut c = c0;
+    while c < c1 {
+        let Some(&word) = words.get(c >> 2) else {
+            return;
+        };
+        if word == MIXED_WORD && c & 3 == 0 {
+            c += 4;
+            continue;
+        }
+        let t = (word >> ((c & 3) << 3)) as u8;
+        if let (Some(v), Some(px)) = (
+            entries.get(usize::from(t)),
+            acc.get_mut(c * C..c * C + C)
+                .and_then(|p| p.first_chunk_mut::<C>()),
+        ) {
+            *px = *v;
+        }
+        c += 1;
+    }
 }
 
 /// Sets pixel `c`'s tag to `MIXED` (an or between a load and a store).

@@ -37,8 +37,8 @@ impl<const C: usize> BandBuffer<'_, C> {
         let bg = self.background.map(|b| i32::from(b) << COVER_BITS);
         let full = i32::from(FULL);
         let y_band = self.band.y0;
-        let dense = self.palette.dense;
         for (y, mut row) in self.sweep_rows(y_lo, y_hi) {
+            let dense = row.dense;
             let r = (y - y_band) as usize;
             let (lo, hi) = (row.lo, row.hi);
             let deltas = &mut *row.deltas;
@@ -64,6 +64,12 @@ impl<const C: usize> BandBuffer<'_, C> {
                 let s_px = ((c.unsigned_abs() >> (COVER_BITS - FULL_BITS)) as i32).min(full);
                 if s_px > 0 {
                     drawn_end = x + 1;
+                    // What the composite may change is no palette colour;
+                    // its value below it is its entry's (see `band::tags`).
+                    if !dense {
+                        super::tags::materialise(row_acc, row.tags, row.palette, x, x + 1);
+                        super::tags::set_mixed(row.tags, x);
+                    }
                     let z = zplane.depth(zf);
                     if let (Some(px), Some(zd), Some(k), Some(mk)) = (
                         row_acc.get_mut(x * C..x * C + C),
@@ -133,10 +139,6 @@ impl<const C: usize> BandBuffer<'_, C> {
                 if let Some(se) = samples {
                     se.step(&mut e);
                 }
-            }
-            // What the composite may have changed is no palette colour.
-            if !dense {
-                super::tags::fill(row.tags, lo, drawn_end, super::MIXED);
             }
             row.mark(lo, drawn_end);
         }

@@ -824,7 +824,11 @@ fn tone_band<O: Copy, P, const C: usize>(
         }
         let drawn = usize::from(drawn.start)..usize::from(drawn.end);
         if !drawn.is_empty() {
-            profile.start_row(&ToneRow::new(y, band.x0, acc));
+            profile.start_row(&if dense {
+                ToneRow::new(y, band.x0, acc)
+            } else {
+                ToneRow::tagged(y, band.x0, acc, words, parts.palette.entries())
+            });
         }
         if let Some(left) = out.get_mut(..drawn.start) {
             left.fill(bg_code);
@@ -835,6 +839,7 @@ fn tone_band<O: Copy, P, const C: usize>(
         let tone = RowTone {
             codes: &codes,
             known,
+            entries: parts.palette.entries(),
             bg: bg_acc,
             profile: &*profile,
             x0: band.x0,
@@ -852,6 +857,8 @@ fn tone_band<O: Copy, P, const C: usize>(
 struct RowTone<'t, P, const C: usize> {
     codes: &'t [u32; PALETTE],
     known: u32,
+    /// The palette's entries (a tagged pixel's value).
+    entries: &'t [[i32; C]],
     bg: [i32; C],
     profile: &'t P,
     x0: i32,
@@ -863,14 +870,16 @@ where
     P::Color: RawColor,
 {
     /// The raw colours of the row's pixels `drawn` into `out`, from their
-    /// tag `words` and accumulator `acc`, which is reset to the background,
-    /// a run of equal tag words at a time: a run of one known palette
-    /// entry (the background between shapes, a disc's inside) is one fill,
-    /// a run of `MIXED` words a loop of its own, other words pixel by
-    /// pixel. `drawn` is taken out to whole words: the pixels of a word
-    /// beside it are the background's, tagged so (untouched since the last
-    /// reset), and get its colour as the fill beside `drawn` gives them.
-    /// A dense band's (every tag `MIXED`) row is one run.
+    /// tag `words` and accumulator `acc`, a run of equal tag words at a
+    /// time: a run of one known palette entry (the background between
+    /// shapes, a disc's inside) is one fill, a run of `MIXED` words a loop
+    /// of its own, other words pixel by pixel. `drawn` is taken out to
+    /// whole words: the pixels of a word beside it are the background's,
+    /// tagged so (untouched since the last flush), and get its colour as
+    /// the fill beside `drawn` gives them. Nothing is reset: the next
+    /// band's tags say the background (see `band::tags`). A dense band's
+    /// row (every tag `MIXED`) is one run, its accumulator reset to the
+    /// background.
     #[inline(never)]
     fn row<O: Copy>(
         &self,
@@ -882,7 +891,7 @@ where
         put: impl Fn(u32) -> O + Copy,
     ) {
         if dense {
-            self.mixed(out, acc, drawn.start, drawn.end, put);
+            self.mixed::<_, true>(out, acc, drawn.start, drawn.end, put);
             return;
         }
         let w = out.len();
@@ -897,34 +906,21 @@ where
             i = j;
             let t = word as u8;
             if word == tags::MIXED_WORD {
-                self.mixed(out, acc, a, b, put);
+                self.mixed::<_, false>(out, acc, a, b, put);
             } else if word == tags::splat(t) && self.is_known(t) {
                 fill(
                     out.get_mut(a..b).unwrap_or_default(),
                     put(self.codes[usize::from(t) & (PALETTE - 1)]),
                 );
-                if t != 0 {
-                    // Stepped a chunk at a time: `chunks_exact` would
-                    // divide the length by `C`, a call on the Cortex-M0.
-                    let bg = self.bg;
-                    let mut px = acc.get_mut(a * C..b * C).unwrap_or_default();
-                    while let Some((p, rest)) =
-                        core::mem::take(&mut px).split_first_chunk_mut::<C>()
-                    {
-                        *p = bg;
-                        px = rest;
-                    }
-                }
             } else {
                 // Words of different tags (at an edge): pixel by pixel.
-                let (Some(out), Some(px)) = (out.get_mut(a..b), acc.get_mut(a * C..b * C)) else {
+                let (Some(out), Some(px)) = (out.get_mut(a..b), acc.get(a * C..b * C)) else {
                     continue;
                 };
                 let (mut tags, mut px) = (word as u32, px);
                 let mut x = self.x0.wrapping_add(a as i32);
                 for o in out {
-                    let Some((p, rest)) = core::mem::take(&mut px).split_first_chunk_mut::<C>()
-                    else {
+                    let Some((p, rest)) = px.split_first_chunk::<C>() else {
                         break;
                     };
                     *o = put(self.take(p, tags as u8, x));
@@ -935,10 +931,12 @@ where
         }
     }
 
-    /// The raw colours of pixels `c0..c1` from their values (every one
-    /// resolved and toned), each reset to the background.
+    /// The raw colours of pixels `c0..c1` from their accumulator (every
+    /// one resolved and toned); with `RESET` (a dense band) each reset to
+    /// the background. Stepped a pixel's chunk at a time: `chunks_exact`
+    /// would divide the length by `C`, a call on the Cortex-M0.
     #[inline(never)]
-    fn mixed<O: Copy>(
+    fn mixed<O: Copy, const RESET: bool>(
         &self,
         out: &mut [O],
         acc: &mut [i32],
@@ -946,16 +944,19 @@ where
         c1: usize,
         put: impl Fn(u32) -> O,
     ) {
-        let (Some(out), Some(acc)) = (out.get_mut(c0..c1), acc.get_mut(c0 * C..c1 * C)) else {
+        let (Some(out), Some(mut px)) = (out.get_mut(c0..c1), acc.get_mut(c0 * C..c1 * C)) else {
             return;
         };
         let mut x = self.x0.wrapping_add(c0 as i32);
-        for (o, px) in out.iter_mut().zip(acc.chunks_exact_mut(C)) {
-            if let Some(px) = px.first_chunk_mut::<C>() {
-                *o = put(self.profile.color(x, self.y, resolve_px(px)).to_raw());
-                *px = self.bg;
+        for o in out {
+            let Some((p, rest)) = core::mem::take(&mut px).split_first_chunk_mut::<C>() else {
+                break;
+            };
+            *o = put(self.profile.color(x, self.y, resolve_px(p)).to_raw());
+            if RESET {
+                *p = self.bg;
             }
-            x = x.wrapping_add(1);
+            (px, x) = (rest, x.wrapping_add(1));
         }
     }
 
@@ -965,22 +966,17 @@ where
         (t as usize) < PALETTE && self.known >> t & 1 != 0
     }
 
-    /// The raw colour of pixel value `px` at column `x`, tagged `t`: its
-    /// entry's if known, else its value resolved (the one rounding) and
-    /// toned at its place; the value reset to the background (the
-    /// background's pixels hold it already).
+    /// The raw colour of the pixel at column `x` tagged `t`, its
+    /// accumulator `px`: its entry's colour if known, else its value (its
+    /// entry's, or `px` when `MIXED`) resolved (the one rounding) and
+    /// toned at its place.
     #[inline(always)]
-    fn take(&self, px: &mut [i32; C], t: u8, x: i32) -> u32 {
-        let code = if self.is_known(t) {
-            if t == 0 {
-                return self.codes[0];
-            }
-            self.codes[usize::from(t) & (PALETTE - 1)]
-        } else {
-            self.profile.color(x, self.y, resolve_px(px)).to_raw()
-        };
-        *px = self.bg;
-        code
+    fn take(&self, px: &[i32; C], t: u8, x: i32) -> u32 {
+        if self.is_known(t) {
+            return self.codes[usize::from(t) & (PALETTE - 1)];
+        }
+        let v = self.entries.get(usize::from(t)).unwrap_or(px);
+        self.profile.color(x, self.y, resolve_px(v)).to_raw()
     }
 }
 
@@ -1189,6 +1185,91 @@ mod tests {
             }
             Ok(())
         }
+    }
+
+    /// The tag is the value (`band::tags`): a scene (flat, translucent and
+    /// added polygons, whole boxes, Gouraud meshes, gradients, e-g pixels,
+    /// discs and rings centred on pixels and off them, text) drawn into a
+    /// band that keeps tags (its accumulator untouched where a flat colour
+    /// covers) gives every pixel the value it gets in a band made dense
+    /// before the first shape, where the accumulator is every pixel's
+    /// value and no tag is kept; also where the tagged band itself goes
+    /// dense part way (more flat colours than palette entries).
+    #[test]
+    fn a_band_that_keeps_tags_holds_the_values_of_a_dense_one() {
+        use crate::draw::{AaDrawable, AaStyle};
+        use crate::text::bundled::SANS_16;
+        use crate::text::{AaTextStyle, DrawAaText};
+        use embedded_graphics::prelude::{AngleUnit, Point, Primitive, RgbColor};
+        use embedded_graphics::primitives::{Arc, Circle};
+        use embedded_graphics::text::Text;
+        let mut rng = Lcg(0x7a65_d0e5);
+        let (mut went_dense, mut stayed) = (0, 0);
+        for case in 0..400 {
+            let (w, h) = (1 + rng.below(48) as u16, 1 + rng.below(40) as u16);
+            let seed = rng.next_u64();
+            let discs: Vec<(i32, i32, u32, u16)> = (0..rng.below(4))
+                .map(|_| {
+                    (
+                        rng.below(u64::from(w)) as i32 - 4,
+                        rng.below(u64::from(h)) as i32 - 4,
+                        1 + rng.below(30) as u32,
+                        rng.below(0x10000) as u16,
+                    )
+                })
+                .collect();
+            let draw = |dense: bool| -> (Vec<[u16; 3]>, bool) {
+                let mut acc = vec![0x5a5a_5a5a; BandBuffer::<3>::acc_len(w, h)];
+                let mut cover = vec![0; BandBuffer::<3>::cover_len(w, h)];
+                let band = crate::band::Band::new(w, 0, h);
+                let mut buf = BandBuffer::<3>::new(&mut acc, &mut cover, band).unwrap();
+                buf.clear([300, 2000, 4000]);
+                if dense {
+                    buf.go_dense();
+                }
+                {
+                    let mut canvas: Canvas<'_, '_, 3, Rgb565> = Canvas::typed(&mut buf, None);
+                    for &(x, y, d, c) in &discs {
+                        let col =
+                            Rgb565::from(embedded_graphics_core::pixelcolor::raw::RawU16::new(c));
+                        let _ = Circle::new(Point::new(x, y), d)
+                            .into_styled(AaStyle::with_fill(col))
+                            .draw(&mut canvas);
+                        let _ =
+                            Arc::new(Point::new(x + 1, y), d + 3, 30.0f32.deg(), 250.0f32.deg())
+                                .into_styled(AaStyle::with_stroke(Rgb565::GREEN, 3))
+                                .draw(&mut canvas);
+                    }
+                    if case % 3 == 0 {
+                        // More flat colours than the palette has entries.
+                        for k in 0..40u16 {
+                            let (x, y) = (i32::from(k * 7 % w), i32::from(k % h));
+                            canvas
+                                .buffer()
+                                .store_span(x, x + 3, y, [k * 100, 50, 4000 - k]);
+                        }
+                    }
+                    let _ = scene::<3, Rgb565>(seed, w, h)(&mut canvas);
+                    let style = AaTextStyle::new(&SANS_16, Rgb565::WHITE);
+                    let _ = Text::new("Ag%", Point::new(2, i32::from(h) / 2 + 4), style)
+                        .draw(&mut canvas);
+                }
+                let px = (0..i32::from(h))
+                    .flat_map(|y| (0..i32::from(w)).map(move |x| (x, y)))
+                    .map(|(x, y)| buf.lin12(x, y).unwrap())
+                    .collect();
+                (px, buf.is_dense())
+            };
+            let (tagged, ended_dense) = draw(false);
+            let (plain, _) = draw(true);
+            assert!(tagged == plain, "case {case}: {w}x{h}");
+            if ended_dense {
+                went_dense += 1;
+            } else {
+                stayed += 1;
+            }
+        }
+        assert!(went_dense > 20 && stayed > 100, "{went_dense} {stayed}");
     }
 
     /// The reference: the scene drawn into one band of the whole frame,

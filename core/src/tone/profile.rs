@@ -23,11 +23,37 @@ pub struct ToneRow<'r, const C: usize> {
     /// Frame column of the first pixel.
     pub x0: i32,
     acc: &'r [i32],
+    /// The row's tag words and the band's palette entries, when the band
+    /// keeps tags: a tagged pixel's value is its entry's (see
+    /// `band::tags`).
+    tags: Option<(&'r [i32], &'r [[i32; C]])>,
 }
 
 impl<'r, const C: usize> ToneRow<'r, C> {
+    /// A row of values (`C` accumulator values a pixel).
     pub(crate) fn new(y: i32, x0: i32, acc: &'r [i32]) -> Self {
-        Self { y, x0, acc }
+        Self {
+            y,
+            x0,
+            acc,
+            tags: None,
+        }
+    }
+
+    /// A band's row: its accumulator, tag words and palette entries.
+    pub(crate) fn tagged(
+        y: i32,
+        x0: i32,
+        acc: &'r [i32],
+        words: &'r [i32],
+        entries: &'r [[i32; C]],
+    ) -> Self {
+        Self {
+            y,
+            x0,
+            acc,
+            tags: Some((words, entries)),
+        }
     }
 
     /// Number of pixels.
@@ -43,6 +69,13 @@ impl<'r, const C: usize> ToneRow<'r, C> {
     /// The linear 12-bit value of the row's `k`-th pixel (0 past the end).
     pub fn lin12(&self, k: usize) -> [u16; C] {
         let mut out = [0u16; C];
+        let entry = self.tags.and_then(|(words, entries)| {
+            let t = crate::band::tags::get(words, k);
+            entries.get(usize::from(t)).filter(|_| k < self.len())
+        });
+        if let Some(v) = entry {
+            return v.map(crate::units::resolve);
+        }
         if let Some(px) = self.acc.get(k * C..k * C + C) {
             for (o, &a) in out.iter_mut().zip(px) {
                 *o = crate::units::resolve(a);
