@@ -1,4 +1,6 @@
-//! Integer division without panic paths.
+//! Integer division without panic paths, and the few other integer and
+//! memory primitives the Cortex-M0 needs written out (wide products, a
+//! slice fill).
 //!
 //! Every divisor in the setup code is positive by construction (an edge's
 //! extent, a triangle's doubled area, one pixel in sub-pixels), but the
@@ -329,6 +331,22 @@ static ROOTS: [u32; 129] = {
     }
     t
 };
+
+/// `v` into every element of `run`, eight stores a loop (a slice's
+/// `fill` of a 16- or 32-bit value compares after every store on the
+/// Cortex-M0: three instructions an element, here about one and a half).
+#[inline(always)]
+pub(crate) fn fill<O: Copy>(run: &mut [O], v: O) {
+    let mut eights = run.chunks_exact_mut(8);
+    for e in &mut eights {
+        if let Ok(e) = <&mut [O; 8]>::try_from(e) {
+            *e = [v; 8];
+        }
+    }
+    for o in eights.into_remainder() {
+        *o = v;
+    }
+}
 
 #[cfg(test)]
 mod tests {

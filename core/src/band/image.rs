@@ -75,6 +75,10 @@ pub(crate) trait ImageRuns<const C: usize>: core::fmt::Debug {
     /// frame pixel `(x, y)` with factor `k` ([`WHOLE`], [`SKIP`] or a
     /// share) by `op` over the background `bg`.
     fn compose(&self, px: &mut [i32], k: i32, x: i32, y: i32, op: ComposeOp, bg: [u16; C]);
+
+    /// Every sample opaque, and a colour (not a mask's alpha): an over of
+    /// whole pixels replaces them unread.
+    fn opaque(&self) -> bool;
 }
 
 /// How a run's pixels take their samples (chosen per run; one pixel loop
@@ -88,6 +92,10 @@ enum Mode {
 }
 
 impl<const C: usize, T: TexelRun<C>> ImageRuns<C> for T {
+    fn opaque(&self) -> bool {
+        T::OPAQUE && !T::MASK
+    }
+
     fn compose(&self, px: &mut [i32], k: i32, x: i32, y: i32, op: ComposeOp, bg: [u16; C]) {
         if k == SKIP {
             return;
@@ -123,6 +131,11 @@ impl<const C: usize> RunOp<C> for ImageRun<'_, C> {
     #[inline(always)]
     fn run(&self, px: &mut [i32], k: i32, (x, y): (i32, i32)) {
         self.image.compose(px, k, x, y, self.op, self.bg);
+    }
+
+    #[inline(always)]
+    fn reads(&self, k: i32) -> bool {
+        !(k == WHOLE && matches!(self.op, ComposeOp::Over(_)) && self.image.opaque())
     }
 }
 

@@ -729,13 +729,15 @@ pub(super) struct RowPixels<'r, const C: usize> {
 }
 
 impl<const C: usize> RowPixels<'_, C> {
-    /// The accumulator of pixels `c0..c1`, to be changed: their values
-    /// (a tagged pixel's from its entry), tagged `MIXED` (see
-    /// `band::tags`).
+    /// The accumulator of pixels `c0..c1`, to be changed, tagged `MIXED`;
+    /// with `read`, holding their values (a tagged pixel's from its entry;
+    /// see `band::tags`).
     #[inline]
-    pub(super) fn take(&mut self, c0: usize, c1: usize) -> &mut [i32] {
+    pub(super) fn take(&mut self, c0: usize, c1: usize, read: bool) -> &mut [i32] {
         if let Some((words, palette)) = &mut self.tags {
-            tags::materialise(self.acc, words, palette, c0, c1);
+            if read {
+                tags::materialise(self.acc, words, palette, c0, c1);
+            }
             tags::fill(words, c0, c1, MIXED);
         }
         self.acc.get_mut(c0 * C..c1 * C).unwrap_or_default()
@@ -783,7 +785,7 @@ fn sweep_row<O: RunOp<C>, F: Fn(i32) -> i32, const C: usize>(
             }
             last = end;
             if k != SKIP {
-                let run = pixels.take(lo + i, lo + end);
+                let run = pixels.take(lo + i, lo + end, op.reads(k));
                 op.run(run, k, (x.wrapping_add(i as i32), y));
             }
         }
@@ -818,6 +820,14 @@ fn compose_run<O: SpanOp<C>, const C: usize>(op: &O, px: &mut [i32], k: i32, (x,
 /// every [`SpanOp`], by its own stepping for a gradient.
 pub(super) trait RunOp<const C: usize> {
     fn run(&self, px: &mut [i32], k: i32, at: (i32, i32));
+
+    /// False when a run of factor `k` replaces its pixels without reading
+    /// them (an opaque image's whole pixels): their values need not be
+    /// taken from their tags first (see `band::tags`).
+    #[inline(always)]
+    fn reads(&self, _k: i32) -> bool {
+        true
+    }
 }
 
 impl<O: SpanOp<C>, const C: usize> RunOp<C> for O {

@@ -56,8 +56,9 @@ pub(crate) fn get(words: &[i32], c: usize) -> u8 {
 /// Gives pixels `c0..c1` of a row (its accumulator `acc`, `C` values a
 /// pixel, and tag `words`) that are tagged with a palette entry the
 /// entry's value (`entries`) in the accumulator, so that a composite may
-/// read it there; their tags are left as they are. Words of four `MIXED`
-/// tags are passed over whole.
+/// read it there; their tags are left as they are. A run of words of one
+/// tag (a background under an image, four `MIXED` pixels) is taken whole:
+/// its entry loaded once and stored pixel after pixel, or passed over.
 #[inline(never)]
 pub(crate) fn materialise<const C: usize>(
     acc: &mut [i32],
@@ -71,8 +72,29 @@ pub(crate) fn materialise<const C: usize>(
         let Some(&word) = words.get(c >> 2) else {
             return;
         };
-        if word == MIXED_WORD && c & 3 == 0 {
-            c += 4;
+        let t = word as u8;
+        if c & 3 == 0 && c + 4 <= c1 && word == splat(t) {
+            let mut e = c + 4;
+            while e + 4 <= c1 && words.get(e >> 2) == Some(&word) {
+                e += 4;
+            }
+            if let (Some(&v), Some(mut px)) =
+                (entries.get(usize::from(t)), acc.get_mut(c * C..e * C))
+            {
+                if v.iter().all(|&x| Some(&x) == v.first()) {
+                    // A gray (black, white): one word throughout, a fill
+                    // of words (the library's on the Cortex-M0).
+                    crate::arith::fill(px, v.first().copied().unwrap_or(0));
+                } else {
+                    while let Some((p, rest)) =
+                        core::mem::take(&mut px).split_first_chunk_mut::<C>()
+                    {
+                        *p = v;
+                        px = rest;
+                    }
+                }
+            }
+            c = e;
             continue;
         }
         let t = (word >> ((c & 3) << 3)) as u8;

@@ -908,7 +908,7 @@ where
             if word == tags::MIXED_WORD {
                 self.mixed::<_, false>(out, acc, a, b, put);
             } else if word == tags::splat(t) && self.is_known(t) {
-                fill(
+                crate::arith::fill(
                     out.get_mut(a..b).unwrap_or_default(),
                     put(self.codes[usize::from(t) & (PALETTE - 1)]),
                 );
@@ -977,22 +977,6 @@ where
         }
         let v = self.entries.get(usize::from(t)).unwrap_or(px);
         self.profile.color(x, self.y, resolve_px(v)).to_raw()
-    }
-}
-
-/// `v` into every element of `run`, eight stores a loop (a slice's
-/// `fill` of a 16-bit value compares after every store on the
-/// Cortex-M0).
-#[inline(always)]
-fn fill<O: Copy>(run: &mut [O], v: O) {
-    let mut eights = run.chunks_exact_mut(8);
-    for e in &mut eights {
-        if let Ok(e) = <&mut [O; 8]>::try_from(e) {
-            *e = [v; 8];
-        }
-    }
-    for o in eights.into_remainder() {
-        *o = v;
     }
 }
 
@@ -1189,7 +1173,8 @@ mod tests {
 
     /// The tag is the value (`band::tags`): a scene (flat, translucent and
     /// added polygons, whole boxes, Gouraud meshes, gradients, e-g pixels,
-    /// discs and rings centred on pixels and off them, text) drawn into a
+    /// discs and rings centred on pixels and off them, images, text) drawn
+    /// into a
     /// band that keeps tags (its accumulator untouched where a flat colour
     /// covers) gives every pixel the value it gets in a band made dense
     /// before the first shape, where the accumulator is every pixel's
@@ -1198,11 +1183,16 @@ mod tests {
     #[test]
     fn a_band_that_keeps_tags_holds_the_values_of_a_dense_one() {
         use crate::draw::{AaDrawable, AaStyle};
+        use crate::image::{format, AaImage, RawImage};
+        use crate::path::Degrees;
         use crate::text::bundled::SANS_16;
         use crate::text::{AaTextStyle, DrawAaText};
         use embedded_graphics::prelude::{AngleUnit, Point, Primitive, RgbColor};
         use embedded_graphics::primitives::{Arc, Circle};
         use embedded_graphics::text::Text;
+        let texels: Vec<u8> = (0..12 * 9 * 4).map(|k| (k * 37 % 256) as u8).collect();
+        let opaque = RawImage::<format::Rgb565>::new(&texels, 12, 9).unwrap();
+        let clear = RawImage::<format::Rgba8888>::new(&texels, 6, 9).unwrap();
         let mut rng = Lcg(0x7a65_d0e5);
         let (mut went_dense, mut stayed) = (0, 0);
         for case in 0..400 {
@@ -1250,6 +1240,12 @@ mod tests {
                         }
                     }
                     let _ = scene::<3, Rgb565>(seed, w, h)(&mut canvas);
+                    // Images: an opaque one at whole pixels (replaces what
+                    // it covers unread), a translucent one turned.
+                    let at = FinePoint::from_px(i32::from(w) / 3, i32::from(h) / 4);
+                    let _ = canvas.draw_image(&AaImage::new(&opaque).position(at));
+                    let _ = canvas
+                        .draw_image(&AaImage::new(&clear).position(at).rotate(Degrees::new(33)));
                     let style = AaTextStyle::new(&SANS_16, Rgb565::WHITE);
                     let _ = Text::new("Ag%", Point::new(2, i32::from(h) / 2 + 4), style)
                         .draw(&mut canvas);
