@@ -473,11 +473,11 @@ impl<const C: usize> MaskBlend<C> {
                 return;
             }
         }
-        // The value below is the entry's (the accumulator may hold another).
-        if let Some(v) = palette.entries().get(usize::from(t)) {
-            *p = *v;
-        }
-        blend_over(p, &self.f, s);
+        // The value below is the entry's (the accumulator may hold another),
+        // blended in a local (a copy into `p` first was a library move).
+        let mut q = palette.entries().get(usize::from(t)).copied().unwrap_or(*p);
+        blend_over(&mut q, &self.f, s);
+        *p = q;
         let room = palette.len() + MEMO_RESERVE < tags::PALETTE;
         match room.then(|| palette.intern(p)).flatten() {
             Some(b) => {
