@@ -732,13 +732,31 @@ impl<const C: usize> RowPixels<'_, C> {
     /// The accumulator of pixels `c0..c1`, to be changed, tagged `MIXED`;
     /// with `read`, holding their values (a tagged pixel's from its entry;
     /// see `band::tags`).
-    #[inline]
+    #[inline(always)]
     pub(super) fn take(&mut self, c0: usize, c1: usize, read: bool) -> &mut [i32] {
         if let Some((words, palette)) = &mut self.tags {
-            if read {
-                tags::materialise(self.acc, words, palette, c0, c1);
+            if c1 == c0 + 1 {
+                // One pixel (an edge's runs are mostly one pixel each):
+                // its tag read and set here, no call.
+                let t = tags::get(words, c0);
+                if t != MIXED {
+                    if let (true, Some(v), Some(p)) = (
+                        read,
+                        palette.get(usize::from(t)),
+                        self.acc
+                            .get_mut(c0 * C..c1 * C)
+                            .and_then(|p| p.first_chunk_mut::<C>()),
+                    ) {
+                        *p = *v;
+                    }
+                    tags::set_mixed(words, c0);
+                }
+            } else {
+                if read {
+                    tags::materialise(self.acc, words, palette, c0, c1);
+                }
+                tags::fill(words, c0, c1, MIXED);
             }
-            tags::fill(words, c0, c1, MIXED);
         }
         self.acc.get_mut(c0 * C..c1 * C).unwrap_or_default()
     }
@@ -835,6 +853,11 @@ impl<O: SpanOp<C>, const C: usize> RunOp<C> for O {
     fn run(&self, px: &mut [i32], k: i32, at: (i32, i32)) {
         compose_run(self, px, k, at);
     }
+
+    #[inline(always)]
+    fn reads(&self, k: i32) -> bool {
+        !(O::WHOLE_REPLACES && k == WHOLE)
+    }
 }
 
 /// A gradient's runs, composed in `band/gradient.rs` (its ramps step
@@ -861,6 +884,9 @@ impl<const C: usize> RunOp<C> for GradientRun<'_, C> {
 /// shape; `Cursor` is what it steps along a row (a Gouraud plane's value).
 trait SpanOp<const C: usize> {
     type Cursor;
+    /// [`whole`](Self::whole) replaces the pixel without reading it (an
+    /// over's): a run of whole pixels need not hold their values first.
+    const WHOLE_REPLACES: bool = false;
     /// The cursor at frame pixel `(x, y)` (row set-up).
     fn cursor(&self, x: i32, y: i32) -> Self::Cursor;
     /// One pixel to the right.
@@ -876,6 +902,7 @@ struct OverFlat<const C: usize>([i32; C]);
 
 impl<const C: usize> SpanOp<C> for OverFlat<C> {
     type Cursor = ();
+    const WHOLE_REPLACES: bool = true;
     #[inline(always)]
     fn cursor(&self, _: i32, _: i32) {}
     #[inline(always)]
@@ -906,6 +933,7 @@ struct OverPlane<'p, const C: usize>(&'p Plane<C>);
 
 impl<const C: usize> SpanOp<C> for OverPlane<'_, C> {
     type Cursor = [i32; C];
+    const WHOLE_REPLACES: bool = true;
     #[inline(always)]
     fn cursor(&self, x: i32, y: i32) -> [i32; C] {
         plane_at(self.0, x, y)
