@@ -43,8 +43,9 @@
 //!
 //! Beside its accumulator every pixel has a one-byte tag: the place of its
 //! value in the band's palette of opaque flat colours, or `MIXED`
-//! (`band::tags`): the flush tones a palette colour once per band, not
-//! once per pixel.
+//! (`band::tags`). A tagged pixel's value is its entry's, whatever its
+//! accumulator holds: an opaque flat span only fills tags, and the flush
+//! tones a palette colour once per band, not once per pixel.
 //!
 //! ## Units and ranges
 //!
