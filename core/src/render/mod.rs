@@ -933,8 +933,8 @@ where
 
     /// The raw colours of pixels `c0..c1` from their accumulator (every
     /// one resolved and toned); with `RESET` (a dense band) each reset to
-    /// the background. Stepped a pixel's chunk at a time: `chunks_exact`
-    /// would divide the length by `C`, a call on the Cortex-M0.
+    /// the background. (`chunks_exact` divides the length by `C` once a
+    /// run, a call on the Cortex-M0 for colours; its loop is the tighter.)
     #[inline(never)]
     fn mixed<O: Copy, const RESET: bool>(
         &self,
@@ -944,19 +944,18 @@ where
         c1: usize,
         put: impl Fn(u32) -> O,
     ) {
-        let (Some(out), Some(mut px)) = (out.get_mut(c0..c1), acc.get_mut(c0 * C..c1 * C)) else {
+        let (Some(out), Some(acc)) = (out.get_mut(c0..c1), acc.get_mut(c0 * C..c1 * C)) else {
             return;
         };
         let mut x = self.x0.wrapping_add(c0 as i32);
-        for o in out {
-            let Some((p, rest)) = core::mem::take(&mut px).split_first_chunk_mut::<C>() else {
-                break;
-            };
-            *o = put(self.profile.color(x, self.y, resolve_px(p)).to_raw());
-            if RESET {
-                *p = self.bg;
+        for (o, px) in out.iter_mut().zip(acc.chunks_exact_mut(C)) {
+            if let Some(p) = px.first_chunk_mut::<C>() {
+                *o = put(self.profile.color(x, self.y, resolve_px(p)).to_raw());
+                if RESET {
+                    *p = self.bg;
+                }
             }
-            (px, x) = (rest, x.wrapping_add(1));
+            x = x.wrapping_add(1);
         }
     }
 
