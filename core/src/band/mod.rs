@@ -472,8 +472,12 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
             self.tags.get_mut(r * n..r * n + n),
             self.acc.get_mut(r * w * C..(r + 1) * w * C),
         ) {
-            tags::materialise(acc, words, self.palette.entries(), c, c + 1);
-            tags::set_mixed(words, c);
+            if let Some(px) = acc
+                .get_mut(c * C..c * C + C)
+                .and_then(|p| p.first_chunk_mut::<C>())
+            {
+                tags::take(px, words, self.palette.entries(), c);
+            }
         }
     }
 

@@ -109,6 +109,22 @@ pub(crate) fn materialise<const C: usize>(
     }
 }
 
+/// Pixel `c` of a row (its accumulator `px`, its tag `words`) about to be
+/// changed by a composite: its value into `px` (its entry's when it is
+/// tagged with one, see [`materialise`]), its tag `MIXED`.
+#[inline(always)]
+pub(crate) fn take<const C: usize>(
+    px: &mut [i32; C],
+    words: &mut [i32],
+    entries: &[[i32; C]],
+    c: usize,
+) {
+    if let Some(v) = entries.get(usize::from(get(words, c))) {
+        *px = *v;
+    }
+    set_mixed(words, c);
+}
+
 /// Sets pixel `c`'s tag to `MIXED` (an or between a load and a store).
 #[inline(always)]
 pub(crate) fn set_mixed(words: &mut [i32], c: usize) {

@@ -66,9 +66,11 @@ impl<const C: usize> BandBuffer<'_, C> {
                     drawn_end = x + 1;
                     // What the composite may change is no palette colour;
                     // its value below it is its entry's (see `band::tags`).
-                    if !dense {
-                        super::tags::materialise(row_acc, row.tags, row.palette, x, x + 1);
-                        super::tags::set_mixed(row.tags, x);
+                    let px = row_acc
+                        .get_mut(x * C..x * C + C)
+                        .and_then(|p| p.first_chunk_mut::<C>());
+                    if let (false, Some(px)) = (dense, px) {
+                        super::tags::take(px, row.tags, row.palette, x);
                     }
                     let z = zplane.depth(zf);
                     if let (Some(px), Some(zd), Some(k), Some(mk)) = (

@@ -760,6 +760,17 @@ mod tests {
         }
     }
 
+    /// The point of the circle about `(cx, cy)` of radius `r_q` at the
+    /// clockwise binary angle `t` (a turn `2^32`), rounded to quarter fine
+    /// units (within a unit): an arc's cut.
+    fn cut_point(cx: i32, cy: i32, r_q: i32, t: i64) -> (i32, i32) {
+        let ang = t as f64 / 4_294_967_296.0 * std::f64::consts::TAU;
+        (
+            cx + (f64::from(r_q) * ang.cos()).round() as i32,
+            cy + (f64::from(r_q) * ang.sin()).round() as i32,
+        )
+    }
+
     /// The circle walked into a window in bands of `band` rows; the same
     /// changes whether the window says what it keeps or not.
     fn walk(c: &CircleEdge, win: (i32, i32, i32, i32), band: i32) -> Vec<i64> {
@@ -799,13 +810,7 @@ mod tests {
             let a = rng.below(1 << 32) as i64;
             let sweep = 1 + rng.below((1 << 32) - 1) as i64;
             // The cut points on the circle, rounded (within a unit).
-            let at = |t: i64| -> (i32, i32) {
-                let ang = t as f64 / 4_294_967_296.0 * std::f64::consts::TAU;
-                (
-                    cx + (f64::from(r_q) * ang.cos()).round() as i32,
-                    cy + (f64::from(r_q) * ang.sin()).round() as i32,
-                )
-            };
+            let at = |t: i64| cut_point(cx, cy, r_q, t);
             let spans = c.arc_spans(a, sweep, at(a), at(a + sweep));
             let rows = c.rows();
             let (x_lo, x_hi) = ((cx - r_q) >> Q_BITS, (cx + r_q) >> Q_BITS);
@@ -858,13 +863,7 @@ mod tests {
             let arc = case % 2 == 1;
             let a = rng.below(1 << 32) as i64;
             let sweep = 1 + rng.below((1 << 32) - 1) as i64;
-            let at = |t: i64| -> (i32, i32) {
-                let ang = t as f64 / 4_294_967_296.0 * std::f64::consts::TAU;
-                (
-                    cx + (f64::from(r_q) * ang.cos()).round() as i32,
-                    cy + (f64::from(r_q) * ang.sin()).round() as i32,
-                )
-            };
+            let at = |t: i64| cut_point(cx, cy, r_q, t);
             let spans = if case % 4 == 1 && r_q >= 3 * Q {
                 // An arc from a cut on a row's side in the upper left
                 // quadrant over half a turn: in the row below the cut,
