@@ -143,6 +143,10 @@ impl<const C: usize> BandBuffer<'_, C> {
                 }
             }
             (ComposeOp::Over(a), Paint::Plane(plane)) => {
+                // A Gouraud plane gives every pixel it covers a value of
+                // its own: no tag can say it, and a band with one is a
+                // mesh's band, cheaper without tags (see `Palette`).
+                self.go_dense();
                 self.sweep(y_lo, y_hi, rule, a, true, &OverPlane(plane));
             }
             (ComposeOp::Add(a) | ComposeOp::Accumulate(a), Paint::Flat(color)) => {
@@ -243,7 +247,13 @@ impl<const C: usize> BandBuffer<'_, C> {
                 acc: &mut *row.acc,
                 tags: (!dense).then_some((&mut *row.tags, row.palette)),
             };
-            let (first, last) = sweep_row(op, changes, &mut pixels, lo, w, (x, y), &factor);
+            // A dense band's rows (a Gouraud mesh's) in a loop without
+            // the test for tags at every run.
+            let (first, last) = if dense {
+                sweep_row::<_, _, C, false>(op, changes, &mut pixels, lo, w, (x, y), &factor)
+            } else {
+                sweep_row::<_, _, C, true>(op, changes, &mut pixels, lo, w, (x, y), &factor)
+            };
             if first < last {
                 row.mark(lo + first, lo + last);
             }
@@ -729,9 +739,16 @@ impl<const C: usize> RowPixels<'_, C> {
     /// The accumulator of pixels `c0..c1`, to be changed, tagged `MIXED`;
     /// with `read`, holding their values (a tagged pixel's from its entry;
     /// see `band::tags`).
+    /// `TAGS`: the band keeps tags (known to the row loop; `tags` is then
+    /// `Some`).
     #[inline(always)]
-    pub(super) fn take(&mut self, c0: usize, c1: usize, read: bool) -> &mut [i32] {
-        if let Some((words, palette)) = &mut self.tags {
+    pub(super) fn take<const TAGS: bool>(
+        &mut self,
+        c0: usize,
+        c1: usize,
+        read: bool,
+    ) -> &mut [i32] {
+        if let (true, Some((words, palette))) = (TAGS, &mut self.tags) {
             if c1 == c0 + 1 {
                 // One pixel (an edge's runs are mostly one pixel each):
                 // its tag read and set here, no call (not `tags::take`:
@@ -772,7 +789,7 @@ impl<const C: usize> RowPixels<'_, C> {
 /// last run with one. Out of line, so that its loops keep their values in
 /// registers.
 #[inline(never)]
-fn sweep_row<O: RunOp<C>, F: Fn(i32) -> i32, const C: usize>(
+fn sweep_row<O: RunOp<C>, F: Fn(i32) -> i32, const C: usize, const TAGS: bool>(
     op: &O,
     changes: &mut [i32],
     pixels: &mut RowPixels<'_, C>,
@@ -802,7 +819,7 @@ fn sweep_row<O: RunOp<C>, F: Fn(i32) -> i32, const C: usize>(
             }
             last = end;
             if k != SKIP {
-                let run = pixels.take(lo + i, lo + end, op.reads(k));
+                let run = pixels.take::<TAGS>(lo + i, lo + end, op.reads(k));
                 op.run(run, k, (x.wrapping_add(i as i32), y));
             }
         }
