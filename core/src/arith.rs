@@ -218,14 +218,32 @@ pub(crate) fn limit(v: i64, lo: i64, hi: i64) -> i64 {
 }
 
 /// `floor(sqrt(n))` for any `u64`: [`isqrt64`] below `2^50` (lengths in
-/// the coordinate range), the library's bit-by-bit root above.
+/// the coordinate range); above, the root of the top 32 bits by
+/// [`isqrt32`], then the low 32 bits two at a time as [`isqrt64`] takes
+/// them, the remainder in `u64` (below `2 sqrt(n) + 1 < 2^33`). The
+/// library's root divides (on the Cortex-M0 several library calls, about
+/// five times as many instructions: a stroke's unit normals take such
+/// roots, `path::vector::Pt::unit`).
 #[inline]
 pub(crate) fn isqrt_u64(n: u64) -> u64 {
     if n < 1 << 50 {
-        u64::from(isqrt64(n))
-    } else {
-        n.isqrt()
+        return u64::from(isqrt64(n));
     }
+    let (hi, lo) = ((n >> 32) as u32, n as u32);
+    let mut root = u64::from(isqrt32(hi));
+    let mut rem = u64::from(hi) - root * root;
+    let mut k = 16u32;
+    while k > 0 {
+        k -= 1;
+        rem = (rem << 2) | u64::from((lo >> (2 * k)) & 3);
+        let t = (root << 2) | 1;
+        root <<= 1;
+        if rem >= t {
+            rem -= t;
+            root |= 1;
+        }
+    }
+    root
 }
 
 /// `floor(sqrt(n))` for `n < 2^50`: the root of its top 32 bits (an even

@@ -68,6 +68,17 @@ impl<P: Copy + Into<FinePoint>> Shape for Polyline<'_, P> {
         tol: Tolerance,
         sink: &mut S,
     ) -> Result<(), StrokeError> {
+        let t = self.translate;
+        let at = |k: usize| -> FinePoint {
+            let p: FinePoint = self
+                .vertices
+                .get(k)
+                .map_or(FinePoint::new(0, 0), |&p| p.into());
+            FinePoint::new(p.x.saturating_add(t.x), p.y.saturating_add(t.y))
+        };
+        if crate::path::stroke::windowed::polyline(self.vertices.len(), at, style, tol, sink) {
+            return Ok(());
+        }
         // Fitted to the work budget once, for the stroke and its union.
         let tol = fitted(self, style, tol, self.vertices.len());
         // An error (stopped past its work limit, which a polyline fitted
@@ -295,6 +306,119 @@ mod tests {
 
     use super::*;
     use crate::path::testing::Lcg;
+    use crate::path::{LineCap, LineJoin};
+
+    /// Segments as a sink gets them, with their numbers; `window` as a
+    /// band's canvas gives it.
+    struct Got {
+        window: Option<(i32, i32)>,
+        next: u32,
+        segs: Vec<(u32, FinePoint, FinePoint)>,
+    }
+
+    impl SegmentSink for Got {
+        fn segment(&mut self, a: FinePoint, b: FinePoint) {
+            self.segs.push((self.next, a, b));
+            self.next += 1;
+        }
+        fn window(&self) -> Option<(i32, i32)> {
+            self.window
+        }
+        fn skipped(&mut self, n: u32) {
+            self.next += n;
+        }
+    }
+
+    /// Random lines of 17 to 80 points (steps of a chart, some repeated
+    /// points, some long jumps and sharp turns), random widths, joins and
+    /// caps, and windows of 1 to 40 rows: the segments a windowed stroke
+    /// sends that reach into the window are exactly those of the whole
+    /// stroke that do (the rows of a band get the same coverage), and
+    /// their numbers rise, the same for a segment whatever the window.
+    #[test]
+    fn a_windowed_stroke_sends_the_window_the_whole_strokes_segments() {
+        let mut rng = Lcg(0x5c1a_71e0);
+        let (mut culled, mut checked, mut renumbered) = (0, 0, 0);
+        for case in 0..1500 {
+            let n = 17 + rng.below(64) as usize;
+            let mut pts: Vec<FinePoint> = Vec::new();
+            let (mut x, mut y) = (rng.below(100 << 10) as i32, rng.below(240 << 10) as i32);
+            for _ in 0..n {
+                pts.push(FinePoint::new(x, y));
+                match rng.below(8) {
+                    0 => {} // a repeated point
+                    1 => {
+                        x = rng.below(240 << 10) as i32;
+                        y = rng.below(240 << 10) as i32;
+                    }
+                    _ => {
+                        x += rng.below(8 << 10) as i32 - (2 << 10);
+                        y += rng.below(40 << 10) as i32 - (20 << 10);
+                    }
+                }
+            }
+            let join = [LineJoin::Miter, LineJoin::Round, LineJoin::Bevel][rng.below(3) as usize];
+            let cap = [LineCap::Butt, LineCap::Round, LineCap::Square][rng.below(3) as usize];
+            let style = StrokeStyle::new(256 + rng.below(8 << 10) as u32)
+                .with_join(join)
+                .with_cap(cap);
+            let line = Polyline::new(&pts);
+            let tol = Tolerance::DEFAULT;
+            let mut whole = Got {
+                window: None,
+                next: 0,
+                segs: Vec::new(),
+            };
+            line.stroke_with(&style, tol, &mut whole).unwrap();
+            let meets = |(lo, hi): (i32, i32), a: &FinePoint, b: &FinePoint| {
+                a.y.min(b.y) <= hi && a.y.max(b.y) >= lo
+            };
+            let mut numbers = std::collections::BTreeMap::new();
+            for _ in 0..4 {
+                let lo = rng.below(250 << 10) as i32 - (5 << 10);
+                let w = (lo, lo + (1 + rng.below(40) as i32) * 1024 - 1);
+                let mut got = Got {
+                    window: Some(w),
+                    next: 0,
+                    segs: Vec::new(),
+                };
+                line.stroke_with(&style, tol, &mut got).unwrap();
+                culled += usize::from(got.segs.len() < whole.segs.len());
+                assert!(
+                    got.segs.windows(2).all(|p| p[0].0 < p[1].0),
+                    "case {case}: numbers do not rise"
+                );
+                let inside = |v: &[(u32, FinePoint, FinePoint)]| {
+                    let mut s: Vec<_> = v
+                        .iter()
+                        .filter(|(_, a, b)| meets(w, a, b))
+                        .map(|&(_, a, b)| (a.x, a.y, b.x, b.y))
+                        .collect();
+                    s.sort();
+                    s
+                };
+                assert_eq!(
+                    inside(&got.segs),
+                    inside(&whole.segs),
+                    "case {case}, window {w:?}"
+                );
+                // A segment keeps its number from window to window (but
+                // for the line's first piece: see `stroke::windowed`).
+                for &(k, a, b) in &got.segs {
+                    if meets(w, &a, &b) {
+                        let seen = numbers.insert((a.x, a.y, b.x, b.y), k);
+                        checked += 1;
+                        renumbered += usize::from(seen.is_some_and(|s| s != k));
+                    }
+                }
+            }
+        }
+        assert!(culled > 3000, "{culled} windows culled");
+        assert!(
+            renumbered * 100 < checked,
+            "{renumbered} of {checked} renumbered"
+        );
+    }
 
     /// The shoelace sum as written down, in `i128` throughout.
     fn shoelace(v: &[FinePoint]) -> i128 {

@@ -683,8 +683,26 @@ impl PathSink for Bound {
 /// its own contour's caps. (A polyline's quick answer, without a pass
 /// over its points.)
 pub(crate) fn plainly_within(style: &StrokeStyle<'_>, tol: Tolerance, commands: usize) -> bool {
-    // [`Bound::units`] of `commands` pieces, joins and ends beyond the
-    // range square, without the tallies.
+    let (segments, setups) = per_command(style, tol);
+    let each = segments + setups;
+    let n = commands.min(u32::MAX as usize) as u32;
+    // Both below 2^16: the product in 32 bits.
+    each <= u64::from(MAX_STROKE_WORK) && n < 1 << 16 && n * (each as u32) <= MAX_STROKE_WORK
+}
+
+/// The most segment numbers a straight drawing command of a solid stroke
+/// in `style` at `tol` takes (its piece's two offset edges, a join, and
+/// as if it were a contour of its own two caps, each segment beyond the
+/// range square: [`CLAMPED_NUMBERS`]); at most `2^16` when
+/// [`plainly_within`] holds.
+pub(crate) fn numbers_per_command(style: &StrokeStyle<'_>, tol: Tolerance) -> u32 {
+    per_command(style, tol).0.min(u64::from(u32::MAX)) as u32
+}
+
+/// [`Bound::units`] of one straight drawing command as a piece, a join
+/// and an open contour's two ends beyond the range square, without the
+/// tallies: its segment numbers, and its set-ups.
+fn per_command(style: &StrokeStyle<'_>, tol: Tolerance) -> (u64, u64) {
     let s = style.sides();
     let join_r = (s.m.max(s.p) + 1) / 2 + 1;
     let cap_r = (s.m + s.p + 3) / 4 + 1;
@@ -699,10 +717,7 @@ pub(crate) fn plainly_within(style: &StrokeStyle<'_>, tol: Tolerance, commands: 
         LineCap::Round => (2 * half_turn(cap_r, tol), ARC_SETUP),
     };
     let segments = (2 + join + 2 * cap) * u64::from(CLAMPED_NUMBERS);
-    let each = segments + PIECE_SETUP + join_setup + 2 * cap_setup;
-    let n = commands.min(u32::MAX as usize) as u32;
-    // Both below 2^16: the product in 32 bits.
-    each <= u64::from(MAX_STROKE_WORK) && n < 1 << 16 && n * (each as u32) <= MAX_STROKE_WORK
+    (segments, PIECE_SETUP + join_setup + 2 * cap_setup)
 }
 
 /// The tolerance to stroke `shape` with in `style` when `tol` is asked

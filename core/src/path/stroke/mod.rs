@@ -76,6 +76,7 @@ pub(crate) mod budget;
 pub mod dash;
 pub mod outline;
 pub mod union;
+pub(crate) mod windowed;
 
 use crate::geom::{FinePoint, PathSink};
 
