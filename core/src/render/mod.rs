@@ -206,7 +206,7 @@ pub trait BandTarget: OriginDimensions {
         let buf = self.buffer();
         let n = n.min(buf.len());
         if let Some(run) = buf.get_mut(..n) {
-            run.fill(raw);
+            crate::arith::fill(run, raw);
         }
         self.send(area)
     }
@@ -831,10 +831,10 @@ fn tone_band<O: Copy, P, const C: usize>(
             });
         }
         if let Some(left) = out.get_mut(..drawn.start) {
-            left.fill(bg_code);
+            crate::arith::fill(left, bg_code);
         }
         if let Some(right) = out.get_mut(drawn.end..) {
-            right.fill(bg_code);
+            crate::arith::fill(right, bg_code);
         }
         let tone = RowTone {
             codes: &codes,
