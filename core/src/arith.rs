@@ -357,8 +357,11 @@ static ROOTS: [u32; 129] = {
 pub(crate) fn fill<O: Copy>(run: &mut [O], v: O) {
     let mut eights = run.chunks_exact_mut(8);
     for e in &mut eights {
-        if let Ok(e) = <&mut [O; 8]>::try_from(e) {
-            *e = [v; 8];
+        // Eight stores written out: `*e = [v; 8]` is a loop of eight
+        // again where a firmware is built for size (`opt-level = "s"`).
+        if let [a, b, c, d, e, f, g, h] = e {
+            (*a, *b, *c, *d) = (v, v, v, v);
+            (*e, *f, *g, *h) = (v, v, v, v);
         }
     }
     for o in eights.into_remainder() {
@@ -372,6 +375,26 @@ mod tests {
     use super::*;
 
     /// Both paths of the wide products against `i128` arithmetic.
+    /// `fill` stores `v` in every element and nothing else, for every
+    /// length across a few chunks of eight and every start within one.
+    #[test]
+    fn fill_stores_every_element() {
+        for len in 0..40 {
+            for start in 0..8 {
+                let mut buf = [7u16; 56];
+                fill(&mut buf[start..start + len], 0x1234);
+                for (k, &b) in buf.iter().enumerate() {
+                    let want = if (start..start + len).contains(&k) {
+                        0x1234
+                    } else {
+                        7
+                    };
+                    assert_eq!(b, want, "len {len}, start {start}, element {k}");
+                }
+            }
+        }
+    }
+
     #[test]
     fn products_are_those_of_i128_on_both_paths() {
         let edges = [
