@@ -11,7 +11,9 @@
 //! ## Why
 //!
 //! A band builds every piece of a solid stroke (its unit normals and
-//! offset points) to know whether it meets the band, and the round parts
+//! offset points) to know whether it meets the band (but a polyline of
+//! more than 16 points plainly within the budget: only its segments near
+//! the band, [`windowed`](super::windowed)), and the round parts
 //! and curve pieces of a wide stroke are many: a 2000-px ellipse stroked
 //! 4 096 px wide is 3 696 pieces, a 250-point zigzag with round joins
 //! 139 512 segments, and each band built them all again (9.7 M and 65 M
