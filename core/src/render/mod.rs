@@ -1173,8 +1173,7 @@ mod tests {
     /// The tag is the value (`band::tags`): a scene (flat, translucent and
     /// added polygons, whole boxes, Gouraud meshes, gradients, e-g pixels,
     /// discs and rings centred on pixels and off them, images, text) drawn
-    /// into a
-    /// band that keeps tags (its accumulator untouched where a flat colour
+    /// into a band that keeps tags (its accumulator untouched where a flat colour
     /// covers) gives every pixel the value it gets in a band made dense
     /// before the first shape, where the accumulator is every pixel's
     /// value and no tag is kept; also where the tagged band itself goes

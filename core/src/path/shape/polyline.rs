@@ -37,6 +37,15 @@ impl<'a, P: Copy + Into<FinePoint>> Polyline<'a, P> {
             vertices,
         }
     }
+
+    /// The line's vertices where it puts them: moved by `translate`.
+    fn placed(&self) -> impl Fn(P) -> FinePoint {
+        let t = self.translate;
+        move |p| {
+            let p: FinePoint = p.into();
+            FinePoint::new(p.x.saturating_add(t.x), p.y.saturating_add(t.y))
+        }
+    }
 }
 
 impl<P: Copy + Into<FinePoint>> Shape for Polyline<'_, P> {
@@ -49,11 +58,8 @@ impl<P: Copy + Into<FinePoint>> Shape for Polyline<'_, P> {
     }
 
     fn describe<S: PathSink + ?Sized>(&self, sink: &mut S) {
-        let t = self.translate;
-        let mut it = self.vertices.iter().map(|&p| {
-            let p: FinePoint = p.into();
-            FinePoint::new(p.x.saturating_add(t.x), p.y.saturating_add(t.y))
-        });
+        let placed = self.placed();
+        let mut it = self.vertices.iter().map(|&p| placed(p));
         if let Some(first) = it.next() {
             sink.move_to(first);
             for p in it {
@@ -68,13 +74,11 @@ impl<P: Copy + Into<FinePoint>> Shape for Polyline<'_, P> {
         tol: Tolerance,
         sink: &mut S,
     ) -> Result<(), StrokeError> {
-        let t = self.translate;
-        let at = |k: usize| -> FinePoint {
-            let p: FinePoint = self
-                .vertices
+        let placed = self.placed();
+        let at = |k: usize| {
+            self.vertices
                 .get(k)
-                .map_or(FinePoint::new(0, 0), |&p| p.into());
-            FinePoint::new(p.x.saturating_add(t.x), p.y.saturating_add(t.y))
+                .map_or(FinePoint::new(0, 0), |&p| placed(p))
         };
         if crate::path::stroke::windowed::polyline(self.vertices.len(), at, style, tol, sink) {
             return Ok(());
@@ -85,11 +89,7 @@ impl<P: Copy + Into<FinePoint>> Shape for Polyline<'_, P> {
         // to the budget never reaches): no union for pieces not drawn.
         centred_stroke(self, style, tol, sink)?;
         // Where the stroke overlaps itself: the union, not the sum.
-        let t = self.translate;
-        let points = self.vertices.iter().map(|&p| {
-            let p: FinePoint = p.into();
-            FinePoint::new(p.x.saturating_add(t.x), p.y.saturating_add(t.y)).into()
-        });
+        let points = self.vertices.iter().map(|&p| placed(p).into());
         crate::path::stroke::union::polyline_union(points, style, tol, false, sink);
         Ok(())
     }
@@ -305,29 +305,8 @@ mod tests {
     use std::vec::Vec;
 
     use super::*;
-    use crate::path::testing::Lcg;
+    use crate::path::testing::{Lcg, Numbering};
     use crate::path::{LineCap, LineJoin};
-
-    /// Segments as a sink gets them, with their numbers; `window` as a
-    /// band's canvas gives it.
-    struct Got {
-        window: Option<(i32, i32)>,
-        next: u32,
-        segs: Vec<(u32, FinePoint, FinePoint)>,
-    }
-
-    impl SegmentSink for Got {
-        fn segment(&mut self, a: FinePoint, b: FinePoint) {
-            self.segs.push((self.next, a, b));
-            self.next += 1;
-        }
-        fn window(&self) -> Option<(i32, i32)> {
-            self.window
-        }
-        fn skipped(&mut self, n: u32) {
-            self.next += n;
-        }
-    }
 
     /// Random lines of 17 to 80 points (steps of a chart, some repeated
     /// points, some long jumps and sharp turns), random widths, joins and
@@ -364,7 +343,7 @@ mod tests {
                 .with_cap(cap);
             let line = Polyline::new(&pts);
             let tol = Tolerance::DEFAULT;
-            let mut whole = Got {
+            let mut whole = Numbering {
                 window: None,
                 next: 0,
                 segs: Vec::new(),
@@ -377,7 +356,7 @@ mod tests {
             for _ in 0..4 {
                 let lo = rng.below(250 << 10) as i32 - (5 << 10);
                 let w = (lo, lo + (1 + rng.below(40) as i32) * 1024 - 1);
-                let mut got = Got {
+                let mut got = Numbering {
                     window: Some(w),
                     next: 0,
                     segs: Vec::new(),

@@ -198,19 +198,19 @@ impl<F: Fn(usize) -> FinePoint> Line<'_, F> {
         ) else {
             return Some((first, end));
         };
-        while let Some(before) = self.long_before(first) {
+        loop {
+            let Some(before) = self.long_before(first) else {
+                // The line's first piece: from its start.
+                return Some((0, end));
+            };
             let Some(p) = self.normal(before) else {
-                break;
+                return Some((first, end));
             };
             if p == f || f == q || is_right_turn(p, f) != is_right_turn(f, q) {
                 return Some((first, end));
             }
             (first, f, q) = (before, p, f);
         }
-        if self.long_before(first).is_none() {
-            first = 0;
-        }
-        Some((first, end))
     }
 }
 
