@@ -58,14 +58,27 @@ pub(crate) trait TexelRun<const C: usize>: core::fmt::Debug {
     fn tint(&self) -> [i32; C] {
         [0; C]
     }
-    /// Stores the samples of the whole pixels `px` (`C` values a pixel)
-    /// from frame pixel `(x, y)` rightwards, as an opaque over of them
+    /// Stores the samples of the whole pixels `px` (`n` of them, `C`
+    /// values a pixel) from frame pixel `(x, y)` rightwards, as an opaque over of them
     /// does (each pixel's value becomes its sample), when the sampler
-    /// can do so a row at a time: true when it did. Only an opaque
-    /// sampler is asked.
-    fn store_whole(&self, _px: &mut [i32], _x: i32, _y: i32) -> bool {
-        false
+    /// can do so a row at a time. With `codes` (a three-channel band that
+    /// keeps tags) it may store an Rgb565 sampler's codes instead, one in
+    /// each pixel's first word (see `band::tags`). Only an opaque sampler
+    /// is asked.
+    fn store_whole(&self, _px: &mut [i32], _n: usize, _x: i32, _y: i32, _codes: bool) -> Stored {
+        Stored::No
     }
+}
+
+/// What [`TexelRun::store_whole`] did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Stored {
+    /// Nothing: the run is sampled pixel by pixel.
+    No,
+    /// Each pixel's value.
+    Values,
+    /// Each pixel's Rgb565 code (the run is to be tagged `SOURCE`).
+    Codes,
 }
 
 /// An image paint as the sweep holds it (a trait object: one call per
@@ -73,12 +86,84 @@ pub(crate) trait TexelRun<const C: usize>: core::fmt::Debug {
 pub(crate) trait ImageRuns<const C: usize>: core::fmt::Debug {
     /// Composes the run `px` (`C` values a pixel) whose first pixel is
     /// frame pixel `(x, y)` with factor `k` ([`WHOLE`], [`SKIP`] or a
-    /// share) by `op` over the background `bg`.
-    fn compose(&self, px: &mut [i32], k: i32, x: i32, y: i32, op: ComposeOp, bg: [u16; C]);
+    /// share) by `op` over the background `bg`; true when it stored
+    /// Rgb565 codes (allowed by `codes`; see [`TexelRun::store_whole`]).
+    #[allow(clippy::too_many_arguments)]
+    fn compose(
+        &self,
+        px: &mut [i32],
+        k: i32,
+        x: i32,
+        y: i32,
+        op: ComposeOp,
+        bg: [u16; C],
+        codes: bool,
+    ) -> bool;
 
     /// Every sample opaque, and a colour (not a mask's alpha): an over of
     /// whole pixels replaces them unread.
     fn opaque(&self) -> bool;
+
+    /// [`compose`](Self::compose) of the `n` whole pixels `px` of an
+    /// opaque sampler, over: each pixel's value its sample (true when
+    /// they were given Rgb565 codes, allowed by `codes`).
+    fn cover_whole(&self, px: &mut [i32], n: usize, x: i32, y: i32, codes: bool) -> bool;
+}
+
+impl<const C: usize> super::BandBuffer<'_, C> {
+    /// Composes `image` over the whole pixels of frame columns `xs` and
+    /// rows `ys` (clipped to the band), opaquely: what the sweep does for
+    /// an opaque image's rectangle whose sides are on pixel boundaries
+    /// (every pixel inside covered wholly, none outside touched), without
+    /// its edges walked and swept. Only for a sampler of opaque colours
+    /// ([`ImageRuns::opaque`]: a whole pixel is replaced unread); each
+    /// row's pixels are tagged `SOURCE` when given Rgb565 codes, else
+    /// `MIXED` (see `band::tags`), and drawn. False (nothing done) for
+    /// any other sampler.
+    pub(crate) fn cover_with_image(
+        &mut self,
+        image: &dyn ImageRuns<C>,
+        xs: core::ops::Range<i32>,
+        ys: core::ops::Range<i32>,
+    ) -> bool {
+        if !image.opaque() {
+            return false;
+        }
+        let band = self.band;
+        let w = usize::from(band.width);
+        let c0 = (xs.start.saturating_sub(band.x0)).clamp(0, w as i32) as usize;
+        let c1 = (xs.end.saturating_sub(band.x0)).clamp(0, w as i32) as usize;
+        if c0 >= c1 {
+            return true;
+        }
+        let n = super::tags::row_words(w);
+        let dense = self.palette.dense;
+        let x = band.x0.wrapping_add(c0 as i32);
+        for y in self.rows_in_band(ys.start, ys.end) {
+            let r = (y - band.y0) as usize;
+            let Some(px) = self.acc.get_mut((r * w + c0) * C..(r * w + c1) * C) else {
+                continue;
+            };
+            let codes = image.cover_whole(px, c1 - c0, x, y, !dense);
+            if !dense {
+                if let Some(words) = self.tags.get_mut(r * n..r * n + n) {
+                    let t = if codes {
+                        super::tags::SOURCE
+                    } else {
+                        super::tags::MIXED
+                    };
+                    super::tags::fill(words, c0, c1, t);
+                }
+            }
+            if let Some([_, _, dlo, dhi]) = self
+                .heads
+                .get_mut(r * super::ROW_HEAD..(r + 1) * super::ROW_HEAD)
+            {
+                super::mark_extent(dlo, dhi, c0, c1);
+            }
+        }
+        true
+    }
 }
 
 /// How a run's pixels take their samples (chosen per run; one pixel loop
@@ -96,27 +181,55 @@ impl<const C: usize, T: TexelRun<C>> ImageRuns<C> for T {
         T::OPAQUE && !T::MASK
     }
 
-    fn compose(&self, px: &mut [i32], k: i32, x: i32, y: i32, op: ComposeOp, bg: [u16; C]) {
+    fn cover_whole(&self, px: &mut [i32], n: usize, x: i32, y: i32, codes: bool) -> bool {
+        if !T::OPAQUE || T::MASK {
+            return false;
+        }
+        match self.store_whole(px, n, x, y, codes) {
+            Stored::Codes => true,
+            Stored::Values => false,
+            Stored::No => {
+                run(self, px, x, y, |p, t| over_whole(self, p, t));
+                false
+            }
+        }
+    }
+
+    fn compose(
+        &self,
+        px: &mut [i32],
+        k: i32,
+        x: i32,
+        y: i32,
+        op: ComposeOp,
+        bg: [u16; C],
+        codes: bool,
+    ) -> bool {
         if k == SKIP {
-            return;
+            return false;
         }
         let whole = k == WHOLE;
         let k = if whole { COVER_ONE } else { k };
-        if T::OPAQUE && whole && matches!(op, ComposeOp::Over(_)) && self.store_whole(px, x, y) {
-            return;
+        if T::OPAQUE && whole && matches!(op, ComposeOp::Over(_)) {
+            match self.store_whole(px, px.len() / C, x, y, codes) {
+                Stored::No => {}
+                Stored::Values => return false,
+                Stored::Codes => return true,
+            }
         }
         let (mode, base) = match op {
             ComposeOp::Over(_) if whole => (Mode::OverWhole, [0; C]),
             ComposeOp::Over(_) => (Mode::OverPart, [0; C]),
             ComposeOp::Add(_) => (Mode::Add, bg.map(|b| i32::from(b) << COVER_BITS)),
             ComposeOp::Accumulate(_) => (Mode::Add, [0; C]),
-            ComposeOp::Attenuate(_) => return,
+            ComposeOp::Attenuate(_) => return false,
         };
         run(self, px, x, y, |p, t| match mode {
             Mode::OverWhole => over_whole(self, p, t),
             Mode::OverPart => over_part(self, p, t, k),
             Mode::Add => add(self, p, t, k, &base),
         });
+        false
     }
 }
 
@@ -129,8 +242,8 @@ pub(super) struct ImageRun<'i, const C: usize> {
 
 impl<const C: usize> RunOp<C> for ImageRun<'_, C> {
     #[inline(always)]
-    fn run(&self, px: &mut [i32], k: i32, (x, y): (i32, i32)) {
-        self.image.compose(px, k, x, y, self.op, self.bg);
+    fn run(&self, px: &mut [i32], k: i32, (x, y): (i32, i32), codes: bool) -> bool {
+        self.image.compose(px, k, x, y, self.op, self.bg, codes)
     }
 
     #[inline(always)]

@@ -343,19 +343,19 @@ impl<'a, const C: usize> BandBuffer<'a, C> {
     }
 
     /// The value of band pixel `(r, c)`: its palette entry's when it is
-    /// tagged with one, else its accumulator (see `band::tags`).
+    /// tagged with one, its code's when tagged `SOURCE`, else its
+    /// accumulator (see `band::tags`).
     #[inline]
     fn value(&self, r: usize, c: usize) -> Option<[i32; C]> {
         let w = usize::from(self.band.width);
-        if !self.palette.dense {
-            let n = tags::row_words(w);
-            let t = tags::get(self.tags.get(r * n..r * n + n)?, c);
-            if let Some(v) = self.palette.entries().get(usize::from(t)) {
-                return Some(*v);
-            }
-        }
         let k = (r * w + c) * C;
-        self.acc.get(k..k + C)?.first_chunk::<C>().copied()
+        let px = self.acc.get(k..k + C)?.first_chunk::<C>()?;
+        if self.palette.dense {
+            return Some(*px);
+        }
+        let n = tags::row_words(w);
+        let t = tags::get(self.tags.get(r * n..r * n + n)?, c);
+        Some(tags::value(px, t, self.palette.entries()))
     }
 
     /// The linear 12-bit value of frame pixel `(x, y)`, or `None` outside

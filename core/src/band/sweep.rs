@@ -469,7 +469,12 @@ impl<const C: usize> MaskBlend<C> {
             return;
         };
         let t = (*word >> shift) as u8;
-        if t == MIXED {
+        if t == MIXED || t == tags::SOURCE {
+            if t == tags::SOURCE {
+                // An image's code: its value, then blended as any other.
+                *p = tags::decode(p.first().copied().unwrap_or(0));
+                *word |= 0xff << shift;
+            }
             blend_over(p, &self.f, s);
             return;
         }
@@ -756,14 +761,13 @@ impl<const C: usize> RowPixels<'_, C> {
                 // screen on the Cortex-M0).
                 let t = tags::get(words, c0);
                 if t != MIXED {
-                    if let (true, Some(v), Some(p)) = (
+                    if let (true, Some(p)) = (
                         read,
-                        palette.get(usize::from(t)),
                         self.acc
                             .get_mut(c0 * C..c1 * C)
                             .and_then(|p| p.first_chunk_mut::<C>()),
                     ) {
-                        *p = *v;
+                        tags::load(p, t, palette);
                     }
                     tags::set_mixed(words, c0);
                 }
@@ -775,6 +779,15 @@ impl<const C: usize> RowPixels<'_, C> {
             }
         }
         self.acc.get_mut(c0 * C..c1 * C).unwrap_or_default()
+    }
+
+    /// Tags pixels `c0..c1` [`SOURCE`](tags::SOURCE): their accumulators
+    /// were given Rgb565 codes (see `band::tags`).
+    #[inline(always)]
+    fn mark_codes(&mut self, c0: usize, c1: usize) {
+        if let Some((words, _)) = &mut self.tags {
+            tags::fill(words, c0, c1, tags::SOURCE);
+        }
     }
 }
 
@@ -820,7 +833,9 @@ fn sweep_row<O: RunOp<C>, F: Fn(i32) -> i32, const C: usize, const TAGS: bool>(
             last = end;
             if k != SKIP {
                 let run = pixels.take::<TAGS>(lo + i, lo + end, op.reads(k));
-                op.run(run, k, (x.wrapping_add(i as i32), y));
+                if op.run(run, k, (x.wrapping_add(i as i32), y), TAGS) {
+                    pixels.mark_codes(lo + i, lo + end);
+                }
             }
         }
         i = j;
@@ -853,7 +868,10 @@ fn compose_run<O: SpanOp<C>, const C: usize>(op: &O, px: &mut [i32], k: i32, (x,
 /// [`sweep_row`]), the first at frame pixel `(x, y)`: pixel by pixel for
 /// every [`SpanOp`], by its own stepping for a gradient.
 pub(super) trait RunOp<const C: usize> {
-    fn run(&self, px: &mut [i32], k: i32, at: (i32, i32));
+    /// Composes the run. `codes`: the band keeps tags, so a run of whole
+    /// pixels may be given Rgb565 codes (see `band::tags`); true when it
+    /// was (the caller tags it so).
+    fn run(&self, px: &mut [i32], k: i32, at: (i32, i32), codes: bool) -> bool;
 
     /// False when a run of factor `k` replaces its pixels without reading
     /// them (an opaque image's whole pixels): their values need not be
@@ -866,8 +884,9 @@ pub(super) trait RunOp<const C: usize> {
 
 impl<O: SpanOp<C>, const C: usize> RunOp<C> for O {
     #[inline(always)]
-    fn run(&self, px: &mut [i32], k: i32, at: (i32, i32)) {
+    fn run(&self, px: &mut [i32], k: i32, at: (i32, i32), _: bool) -> bool {
         compose_run(self, px, k, at);
+        false
     }
 
     #[inline(always)]
@@ -886,13 +905,14 @@ struct GradientRun<'g, const C: usize> {
 
 impl<const C: usize> RunOp<C> for GradientRun<'_, C> {
     #[inline(always)]
-    fn run(&self, px: &mut [i32], k: i32, (x, y): (i32, i32)) {
+    fn run(&self, px: &mut [i32], k: i32, (x, y): (i32, i32), _: bool) -> bool {
         if k == SKIP {
-            return;
+            return false;
         }
         let whole = k == WHOLE;
         let k = if whole { COVER_ONE } else { k };
         super::gradient::compose(px, k, whole, x, y, self.g, self.op, self.bg);
+        false
     }
 }
 

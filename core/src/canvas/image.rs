@@ -2,13 +2,16 @@
 //! or a clip shape) walked into the scratch like any shape, composed with
 //! the image's texels as the paint ([`Paint::Image`]).
 
-use super::{paths, Canvas, Contour, Outline};
-use crate::band::{Coverage, Paint};
-use crate::geom::FINE_BITS;
+use core::ops::Range;
+
+use super::{paths, Canvas, Contour, Outline, WalkKind};
+use crate::band::{ComposeOp, Coverage, Paint};
+use crate::edge::AreaMode;
+use crate::geom::{FinePoint, FINE_BITS};
 use crate::image::{AaImage, ImageError, ImageFault, ImageSource};
 use crate::path::Shape;
 use crate::raster::DrawError;
-use crate::style::FillRule;
+use crate::style::{FillRule, Opacity};
 
 impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
     /// Draws an image ([`AaImage`]): its transformed rectangle (or its
@@ -90,7 +93,23 @@ impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
         );
         let tint = image.tint_lin::<C>();
         let op = super::op_of(image.blend_mode(), image.opacity_value());
+        // An unscaled image at a whole pixel, opaque, over, unclipped,
+        // whose pixels' coverage is exactly whole or none: its rectangle
+        // of whole pixels composed directly, without edges.
+        let whole_px = match (&clip, WalkKind::of(self.style)) {
+            (None, WalkKind::Box(AreaMode::Exact) | WalkKind::Aliased)
+                if map.is_copy() && op == ComposeOp::Over(Opacity::OPAQUE) =>
+            {
+                whole_pixel_rect(&map.corners)
+            }
+            _ => None,
+        };
         let drawn = crate::image::paint(image.source(), &map, tint, (xs, ys), |runs| {
+            if let Some((cols, rows)) = whole_px.clone() {
+                if self.buf.cover_with_image(runs, cols, rows) {
+                    return Ok(());
+                }
+            }
             let paint = Paint::Image(runs);
             let coverage = Coverage::Rule(FillRule::NonZero);
             match &clip {
@@ -100,4 +119,23 @@ impl<const C: usize, Col> Canvas<'_, '_, C, Col> {
         });
         drawn.map_err(named)?
     }
+}
+
+/// The pixel columns and rows of a rectangle whose corners `c` (in any
+/// order) lie on pixel boundaries with axis-aligned sides; `None` for
+/// any other quadrilateral.
+fn whole_pixel_rect(c: &[FinePoint; 4]) -> Option<(Range<i32>, Range<i32>)> {
+    let (mut x0, mut x1, mut y0, mut y1) = (i32::MAX, i32::MIN, i32::MAX, i32::MIN);
+    for p in c {
+        (x0, x1, y0, y1) = (x0.min(p.x), x1.max(p.x), y0.min(p.y), y1.max(p.y));
+    }
+    let on_grid = |v: i32| v & ((1 << FINE_BITS) - 1) == 0;
+    let square = c
+        .iter()
+        .all(|p| (p.x == x0 || p.x == x1) && (p.y == y0 || p.y == y1));
+    let distinct = (0..4).all(|i| (i + 1..4).all(|j| c[i] != c[j]));
+    (square && distinct && [x0, x1, y0, y1].into_iter().all(on_grid)).then_some((
+        (x0 >> FINE_BITS)..(x1 >> FINE_BITS),
+        (y0 >> FINE_BITS)..(y1 >> FINE_BITS),
+    ))
 }

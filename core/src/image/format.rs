@@ -132,6 +132,7 @@ fn srgb8(v: u32) -> u32 {
 impl sealed::Decode for Rgb565 {
     const BITS: u32 = 16;
     const OPAQUE: bool = true;
+    const RGB565: bool = true;
     const MASK: bool = false;
     const GRAY: bool = false;
     #[inline(always)]
@@ -151,6 +152,7 @@ impl sealed::Decode for Rgb565 {
 impl sealed::Decode for Rgb565Be {
     const BITS: u32 = 16;
     const OPAQUE: bool = true;
+    const RGB565: bool = true;
     const MASK: bool = false;
     const GRAY: bool = false;
     #[inline(always)]

@@ -94,6 +94,9 @@ pub(crate) mod sealed {
         const GRAY: bool;
         /// Reads an 8-bit alpha plane.
         const PLANE: bool = false;
+        /// Every texel is opaque and its raw bits are an Rgb565 colour
+        /// (`r << 11 | g << 5 | b`), decoded as such.
+        const RGB565: bool = false;
         /// The raw bits of texel `x` of `row` (`None` past the row's end).
         fn raw(row: &[u8], x: usize) -> Option<u32>;
         /// The texel of raw bits `raw`, its plane alpha `plane` (an 8-bit
@@ -128,6 +131,22 @@ pub(crate) mod sealed {
             for k in 0..n {
                 f(self.texel(x.wrapping_add(k as i32), y));
             }
+        }
+        /// Texels `x..x + n` of row `y` (a run inside the image, as for
+        /// [`row`](Self::row)) as Rgb565 codes into the first word of
+        /// each of the `C`-word pixels `px` (`n` of them), when the
+        /// source's texels are opaque Rgb565 colours read in place: true
+        /// when it stored them (else `px` is untouched). Each code decodes
+        /// to what [`texel`](Self::texel) gives.
+        #[inline(always)]
+        fn store_rgb565<const C: usize>(
+            &self,
+            _x: i32,
+            _y: i32,
+            _n: usize,
+            _px: &mut [i32],
+        ) -> bool {
+            false
         }
     }
 

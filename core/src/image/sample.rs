@@ -20,7 +20,7 @@ use super::format::{luma, ALPHA_BITS, ALPHA_ONE};
 use super::sealed::{Fetch, Lin, Source};
 use super::transform::{Filter, Mapping};
 use super::ImageFault;
-use crate::band::image::{ImageRuns, Texel, TexelRun};
+use crate::band::image::{ImageRuns, Stored, Texel, TexelRun};
 use crate::{COVER_BITS, COVER_ONE};
 
 /// Q32 of half a texel.
@@ -195,16 +195,21 @@ impl<F: Fetch, const C: usize> TexelRun<C> for CopyRun<'_, F, C> {
     /// decoded from the row in order, each stored as it is (an opaque
     /// texel's colour is its pixel's value). A run reaching past the
     /// image's sides takes the clamped texels pixel by pixel.
-    fn store_whole(&self, px: &mut [i32], x: i32, y: i32) -> bool {
+    ///
+    /// With `codes`, a three-channel band and an Rgb565 source: each
+    /// pixel's first word its texel's code (see `band::tags`).
+    fn store_whole(&self, px: &mut [i32], n: usize, x: i32, y: i32, codes: bool) -> Stored {
         if !Self::OPAQUE {
-            return false;
+            return Stored::No;
         }
         let (i, j) = self.start(x, y);
-        let n = px.len() / C;
         let inside =
             i >= 0 && (j as u32) < self.h as u32 && i64::from(i) + n as i64 <= i64::from(self.w);
         if !inside {
-            return false;
+            return Stored::No;
+        }
+        if codes && C == 3 && self.fetch.store_rgb565::<C>(i, j, n, px) {
+            return Stored::Codes;
         }
         let mut out = px.chunks_exact_mut(C);
         self.fetch.row(i, j, n, |t| {
@@ -215,7 +220,7 @@ impl<F: Fetch, const C: usize> TexelRun<C> for CopyRun<'_, F, C> {
                 }
             }
         });
-        true
+        Stored::Values
     }
 }
 

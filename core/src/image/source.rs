@@ -191,6 +191,30 @@ impl<F: Decode> Fetch for RawTexels<'_, F> {
             f(self.texel(x.wrapping_add(k as i32), y));
         }
     }
+
+    /// An Rgb565 format's raw bits, the run's bytes sliced once.
+    #[inline(always)]
+    fn store_rgb565<const C: usize>(&self, x: i32, y: i32, n: usize, px: &mut [i32]) -> bool {
+        if !F::RGB565 || F::PLANE || F::BITS != 16 || C == 0 || x < 0 || y < 0 {
+            return false;
+        }
+        // Inside the image (the caller's run), so below the data's length:
+        // no product overflows (`saturating_mul` is a 64-bit product, a
+        // library call, on a Cortex-M0); `get` checks the range anyway.
+        let i = &self.image;
+        let start = (y as usize)
+            .wrapping_mul(i.stride)
+            .wrapping_add((x as usize).wrapping_mul(2));
+        let Some(bytes) = i.data.get(start..start.wrapping_add(n.wrapping_mul(2))) else {
+            return false;
+        };
+        for (p, t) in px.chunks_exact_mut(C).zip(bytes.chunks_exact(2)) {
+            if let Some(first) = p.first_mut() {
+                *first = F::raw(t, 0).unwrap_or(0) as i32;
+            }
+        }
+        true
+    }
 }
 
 impl<'a, F: TexelFormat> Source for RawImage<'a, F> {

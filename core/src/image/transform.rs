@@ -138,6 +138,12 @@ fn round_q30(v: i64) -> i64 {
 const ONE_Q32: i64 = 1 << 32;
 
 impl Mapping {
+    /// True when a band takes texel for pixel (unscaled, unrotated, at
+    /// a whole-pixel offset: [`Filter::Copy`]).
+    pub(crate) fn is_copy(&self) -> bool {
+        matches!(self.filter, Filter::Copy { .. })
+    }
+
     /// The mapping of an image of `(w, h)` texels under `t`.
     pub(crate) fn new(t: &ImageTransform, (w, h): (u16, u16)) -> Result<Self, ImageFault> {
         // Position in the coordinate range, pivot within 2^24 fine texels
@@ -171,27 +177,43 @@ impl Mapping {
         let (px, py) = (i64::from(t.position.x), i64::from(t.position.y));
         let half = 1i64 << (FINE_BITS - 1);
         let pivot = |p: i32| i64::from(p) << (32 - FINE_BITS);
+        // Unrotated at scale 1 (a copy, or an icon placed between pixels),
+        // the matrix is 2^30 times the identity: see `corner` below.
+        let identity = binary == 0 && sx == 1 << 16 && sy == 1 << 16;
         // The pixel centre's offset from the position is 1024 x + 512 -
-        // position (fine units); the x part gives x ux exactly.
+        // position (fine units); the x part gives x ux exactly. With the
+        // identity (`ux = vy = 2^32`, `uy = vx = 0`) the products are
+        // shifts, exactly.
         let k = |a: i64, b: i64| (a * (half - px) + b * (half - py)) >> FINE_BITS;
-        let u = [pivot(t.pivot.x) + k(ux, uy), ux, uy];
-        let v = [pivot(t.pivot.y) + k(vx, vy), vx, vy];
+        let (ku, kv) = if identity {
+            (
+                (half - px) << (32 - FINE_BITS),
+                (half - py) << (32 - FINE_BITS),
+            )
+        } else {
+            (k(ux, uy), k(vx, vy))
+        };
+        let u = [pivot(t.pivot.x) + ku, ux, uy];
+        let v = [pivot(t.pivot.y) + kv, vx, vy];
         // Forward: position + R S (t - pivot), fine units: the matrix in
         // Q30 (|c sx| >> 16 <= 2^38), times offsets below 2^24 fine units,
         // in i64; the Q30 truncation moves a corner by under 2^-6 fine
         // units.
-        let (fc_x, fs_x, fs_y, fc_y) = (
-            (c * sx) >> 16,
-            (s * sx) >> 16,
-            (s * sy) >> 16,
-            (c * sy) >> 16,
-        );
-        // Unrotated at scale 1 (a copy, or an icon placed between pixels),
-        // the matrix is 2^30 times the identity and each corner is the
-        // position plus its offset, exactly what the products round to:
-        // without them (64-bit products are library calls on a
-        // Cortex-M0, and every band sets its image's mapping up again).
-        let identity = binary == 0 && sx == 1 << 16 && sy == 1 << 16;
+        // (Not made for the identity, which does not use them.)
+        let (fc_x, fs_x, fs_y, fc_y) = if identity {
+            (0, 0, 0, 0)
+        } else {
+            (
+                (c * sx) >> 16,
+                (s * sx) >> 16,
+                (s * sy) >> 16,
+                (c * sy) >> 16,
+            )
+        };
+        // With the identity each corner is the position plus its offset,
+        // exactly what the products round to: without them (64-bit
+        // products are library calls on a Cortex-M0, and every band sets
+        // its image's mapping up again).
         let corner = |tu: i32, tv: i32| -> Result<FinePoint, ImageFault> {
             let du = i64::from(tu) * (1 << FINE_BITS) - i64::from(t.pivot.x);
             let dv = i64::from(tv) * (1 << FINE_BITS) - i64::from(t.pivot.y);
@@ -277,10 +299,17 @@ impl Mapping {
         };
         let mut lo = i64::MAX;
         let mut hi = i64::MIN;
+        // `p k`, saturated; an unrotated, unscaled mapping's `0` and
+        // `2^32` without a 64-bit product (a library call on a Cortex-M0).
+        let mul = |p: i32, k: i64| match k {
+            0 => 0,
+            ONE_Q32 => i64::from(p) << 32,
+            _ => i64::from(p).saturating_mul(k),
+        };
         for (px, py) in [(x.0, y.0), (x.1, y.0), (x.0, y.1), (x.1, y.1)] {
             let v = self.v[0]
-                .saturating_add(i64::from(px).saturating_mul(self.v[1]))
-                .saturating_add(i64::from(py).saturating_mul(self.v[2]));
+                .saturating_add(mul(px, self.v[1]))
+                .saturating_add(mul(py, self.v[2]));
             lo = lo.min(v);
             hi = hi.max(v);
         }
@@ -335,7 +364,24 @@ mod tests {
                 Some([c(0, 0)?, c(w, 0)?, c(w, h)?, c(0, h)?])
             })();
             match (Mapping::new(&t, (w, h)), want) {
-                (Ok(m), Some(c)) => assert_eq!(m.corners, c, "{t:?} {w}x{h}"),
+                (Ok(m), Some(c)) => {
+                    assert_eq!(m.corners, c, "{t:?} {w}x{h}");
+                    // Pixel (x, y)'s centre maps to texel
+                    // ((1024 x + 512 - position + pivot) / 1024) in Q32,
+                    // exactly (i128 here).
+                    let q = |p: i32, pos: i32, piv: i32, k: &[i64; 3], x: i32, y: i32| {
+                        let want = ((i128::from(p) * 1024 + 512 - i128::from(pos)
+                            + i128::from(piv))
+                            << 22) as i64;
+                        let got = k[0]
+                            .wrapping_add(k[1].wrapping_mul(i64::from(x)))
+                            .wrapping_add(k[2].wrapping_mul(i64::from(y)));
+                        assert_eq!(got, want, "{t:?} at ({x}, {y})");
+                    };
+                    let (x, y) = (near(&mut rng) >> 10, near(&mut rng) >> 10);
+                    q(x, position.x, pivot.x, &m.u, x, y);
+                    q(y, position.y, pivot.y, &m.v, x, y);
+                }
                 (Err(ImageFault::Range), None) => {}
                 (got, want) => panic!("{t:?} {w}x{h}: {:?} vs {want:?}", got.map(|m| m.corners)),
             }

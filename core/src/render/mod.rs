@@ -807,6 +807,7 @@ fn tone_band<O: Copy, P, const C: usize>(
     let n = tags::row_words(w);
     let bg_acc = parts.palette.entries().first().copied().unwrap_or([0; C]);
     let dense = parts.palette.dense;
+    let keeps565 = profile.keeps_rgb565();
     let bg_code = put(codes[0]);
     for r in 0..rows {
         let y = band.y0 + r as i32;
@@ -842,11 +843,26 @@ fn tone_band<O: Copy, P, const C: usize>(
             entries: parts.palette.entries(),
             bg: bg_acc,
             profile: &*profile,
+            keeps: keeps565,
             x0: band.x0,
             y,
         };
+        // The next band's tags: the background's. Outside the drawn
+        // extent they are already (nothing drawn there since the last
+        // flush); a dense band's are all `MIXED`.
+        let (k0, k1) = if dense {
+            (0, n)
+        } else {
+            (drawn.start / 4, drawn.end.div_ceil(4))
+        };
         tone.row(out, words, acc, drawn, dense, put);
-        words.fill(0);
+        if let Some(drawn_words) = words.get_mut(k0..k1) {
+            drawn_words.fill(0);
+        }
+        debug_assert!(
+            words.iter().all(|&t| t == 0),
+            "a tag outside row {y}'s drawn extent"
+        );
     }
 }
 
@@ -861,6 +877,9 @@ struct RowTone<'t, P, const C: usize> {
     entries: &'t [[i32; C]],
     bg: [i32; C],
     profile: &'t P,
+    /// The profile sends a `SOURCE` pixel's Rgb565 code as it is
+    /// ([`Profile::keeps_rgb565`]).
+    keeps: bool,
     x0: i32,
     y: i32,
 }
@@ -912,6 +931,14 @@ where
                     out.get_mut(a..b).unwrap_or_default(),
                     put(self.codes[usize::from(t) & (PALETTE - 1)]),
                 );
+            } else if word == tags::SOURCE_WORD && self.keeps {
+                // An image's Rgb565 codes, sent as they are.
+                let (Some(out), Some(px)) = (out.get_mut(a..b), acc.get(a * C..b * C)) else {
+                    continue;
+                };
+                for (o, p) in out.iter_mut().zip(px.chunks_exact(C)) {
+                    *o = put(p.first().copied().unwrap_or(0) as u32);
+                }
             } else {
                 // Words of different tags (at an edge): pixel by pixel.
                 let (Some(out), Some(px)) = (out.get_mut(a..b), acc.get(a * C..b * C)) else {
@@ -974,7 +1001,19 @@ where
         if self.is_known(t) {
             return self.codes[usize::from(t) & (PALETTE - 1)];
         }
-        let v = self.entries.get(usize::from(t)).unwrap_or(px);
+        let decoded;
+        let v = match self.entries.get(usize::from(t)) {
+            Some(v) => v,
+            None if t == tags::SOURCE => {
+                let code = px.first().copied().unwrap_or(0);
+                if self.keeps {
+                    return code as u32;
+                }
+                decoded = tags::decode(code);
+                &decoded
+            }
+            None => px,
+        };
         self.profile.color(x, self.y, resolve_px(v)).to_raw()
     }
 }

@@ -32,6 +32,12 @@ pub trait ToneFormat<const C: usize> {
     #[cfg(feature = "embedded-graphics")]
     #[cfg_attr(docsrs, doc(cfg(feature = "embedded-graphics")))]
     fn color(&self, px: [u16; C]) -> Self::Color;
+
+    /// True when every Rgb565 colour decoded by the sRGB tables is coded
+    /// back to itself (see [`Profile::keeps_rgb565`](super::Profile::keeps_rgb565)).
+    fn keeps_rgb565(&self) -> bool {
+        false
+    }
 }
 
 /// A display colour as the renderer's flush keeps it: its raw bits in a
@@ -241,15 +247,19 @@ impl ToneFormat<3> for Rgb888Format {
 pub struct Rgb565Format {
     lut5: GammaLut,
     lut6: GammaLut,
+    /// Every 5-bit and 6-bit sRGB code decoded by the sRGB tables is
+    /// coded back to itself (found once, by [`new`](Self::new)).
+    keeps: bool,
 }
 
 impl Rgb565Format {
     /// The format for a display with `curve`.
     pub const fn new(curve: Curve) -> Self {
-        Rgb565Format {
-            lut5: GammaLut::with_bits(curve, 5),
-            lut6: GammaLut::with_bits(curve, 6),
-        }
+        let lut5 = GammaLut::with_bits(curve, 5);
+        let lut6 = GammaLut::with_bits(curve, 6);
+        let keeps = round_trips(&lut5, &crate::color::srgb::SRGB5_TO_LIN12)
+            && round_trips(&lut6, &crate::color::srgb::SRGB6_TO_LIN12);
+        Rgb565Format { lut5, lut6, keeps }
     }
 
     /// The three channel codes `(r5, g6, b5)`.
@@ -265,10 +275,29 @@ impl Rgb565Format {
     }
 }
 
+/// True when `lut` codes each level of `decode` (code `k`'s linear
+/// value) back to `k`.
+const fn round_trips<const N: usize>(lut: &GammaLut, decode: &[u16; N]) -> bool {
+    let codes = lut.codes();
+    let mut k = 0;
+    while k < N {
+        let lin = decode[k] as usize;
+        if lin >= codes.len() || codes[lin] as usize != k {
+            return false;
+        }
+        k += 1;
+    }
+    true
+}
+
 impl ToneFormat<3> for Rgb565Format {
     type Code = u16;
     #[cfg(feature = "embedded-graphics")]
     type Color = embedded_graphics_core::pixelcolor::Rgb565;
+
+    fn keeps_rgb565(&self) -> bool {
+        self.keeps
+    }
 
     #[inline]
     fn code(&self, px: [u16; 3]) -> u16 {

@@ -68,20 +68,20 @@ impl<'r, const C: usize> ToneRow<'r, C> {
 
     /// The linear 12-bit value of the row's `k`-th pixel (0 past the end).
     pub fn lin12(&self, k: usize) -> [u16; C] {
-        let mut out = [0u16; C];
-        let entry = self.tags.and_then(|(words, entries)| {
-            let t = crate::band::tags::get(words, k);
-            entries.get(usize::from(t)).filter(|_| k < self.len())
-        });
-        if let Some(v) = entry {
-            return v.map(crate::units::resolve);
-        }
-        if let Some(px) = self.acc.get(k * C..k * C + C) {
-            for (o, &a) in out.iter_mut().zip(px) {
-                *o = crate::units::resolve(a);
+        let Some(px) = self
+            .acc
+            .get(k * C..k * C + C)
+            .and_then(|p| p.first_chunk::<C>())
+        else {
+            return [0; C];
+        };
+        let v = match self.tags {
+            Some((words, entries)) => {
+                crate::band::tags::value(px, crate::band::tags::get(words, k), entries)
             }
-        }
-        out
+            None => *px,
+        };
+        v.map(crate::units::resolve)
     }
 }
 
@@ -104,6 +104,19 @@ pub trait Profile<const C: usize> {
     /// profile does not depend on position (no dithering): the renderer
     /// then sends rows nothing was drawn on without resolving them.
     fn uniform(&self, lin: [u16; C]) -> Option<Self::Color>;
+
+    /// True when every Rgb565 colour (`r << 11 | g << 5 | b`), decoded to
+    /// linear light by the sRGB tables
+    /// ([`SRGB5_TO_LIN12`](crate::color::SRGB5_TO_LIN12),
+    /// [`SRGB6_TO_LIN12`](crate::color::SRGB6_TO_LIN12)), is toned back
+    /// to itself wherever it is, its raw bits that same number: the
+    /// renderer then sends the whole pixels of an unscaled Rgb565 image
+    /// as they were read, without resolving them (the same bits). False
+    /// unless a profile knows it ([`Rgb565Format`](super::format::Rgb565Format)
+    /// with the sRGB curve does).
+    fn keeps_rgb565(&self) -> bool {
+        false
+    }
 }
 
 /// A γ format is a profile by reference: its tables are usually a
@@ -127,6 +140,10 @@ impl<F: ToneFormat<C>, const C: usize> Profile<C> for &F {
     fn uniform(&self, lin: [u16; C]) -> Option<Self::Color> {
         Some(ToneFormat::color(*self, lin))
     }
+
+    fn keeps_rgb565(&self) -> bool {
+        ToneFormat::keeps_rgb565(*self)
+    }
 }
 
 /// A profile with state (error diffusion) is lent to the renderer.
@@ -148,6 +165,10 @@ impl<P: Profile<C> + ?Sized, const C: usize> Profile<C> for &mut P {
 
     fn uniform(&self, lin: [u16; C]) -> Option<Self::Color> {
         (**self).uniform(lin)
+    }
+
+    fn keeps_rgb565(&self) -> bool {
+        (**self).keeps_rgb565()
     }
 }
 
