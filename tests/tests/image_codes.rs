@@ -1,8 +1,9 @@
-//! An unscaled Rgb565 image at a whole pixel is stored as its codes and,
+//! An unscaled Rgb565 image at a whole pixel (softedge's `RawImage`, or
+//! embedded-graphics' `ImageRaw`) is stored as its codes and,
 //! where the display's profile tones every Rgb565 colour back to itself,
 //! sent as it was read (issue #35's copy). The promise is the same bits:
 //! every frame here is rendered twice, once with the images as plain
-//! Rgb565 sources and once with the same texels as colour-keyed sources
+//! Rgb565 sources (softedge's or embedded-graphics') and once with the same texels as colour-keyed sources
 //! whose key never occurs (decoded texel by texel, composited as any
 //! image with alpha is, never stored as codes), and the two frames must be
 //! equal pixel for pixel: with shapes, translucent shapes, text, gradients
@@ -11,6 +12,7 @@
 //! windows, through profiles that keep Rgb565 colours (sRGB) and that do
 //! not (γ 2.2, ordered dithering, Rgb888).
 
+use embedded_graphics::image::{ImageRawBE, ImageRawLE};
 use embedded_graphics::pixelcolor::{PixelColor, Rgb565, Rgb888};
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::{Circle, Rectangle};
@@ -83,6 +85,21 @@ fn a_format_keeps_rgb565_exactly_when_every_colour_comes_back() {
     )));
 }
 
+#[test]
+fn an_rgb565_colour_is_its_own_code_and_decodes_to_its_linear_value() {
+    use embedded_graphics::pixelcolor::raw::RawU16;
+    use embedded_graphics::pixelcolor::{Bgr565, IntoStorage, RgbColor};
+    for v in 0..=u16::MAX {
+        let c = Rgb565::from(RawU16::new(v));
+        assert_eq!(IntoLinear::<3>::rgb565_code(&c), Some(c.into_storage()));
+        assert_eq!(decode(v), IntoLinear::<3>::into_linear(c));
+        let b = Bgr565::new(c.r(), c.g(), c.b());
+        assert_eq!(IntoLinear::<3>::rgb565_code(&b), Some(v));
+    }
+    assert_eq!(IntoLinear::<3>::rgb565_code(&Rgb888::new(1, 2, 3)), None);
+    assert_eq!(IntoLinear::<1>::rgb565_code(&Rgb565::RED), None);
+}
+
 /// One image of a scene: its texels (little and big endian bytes), size,
 /// where it goes and how.
 struct Img {
@@ -97,6 +114,9 @@ struct Img {
     opacity: Opacity,
     add: bool,
     big_endian: bool,
+    /// Drawn from embedded-graphics' `ImageRaw` (`ImageRawLE<Rgb565>`,
+    /// `ImageRawBE<Rgb565>`) instead of softedge's `RawImage`.
+    eg: bool,
 }
 
 enum Item {
@@ -153,6 +173,7 @@ fn random_image(rng: &mut Lcg) -> Img {
         },
         add: rng.below(8) == 0,
         big_endian: rng.below(2) == 0,
+        eg: rng.below(3) == 0,
     }
 }
 
@@ -203,6 +224,14 @@ where
     for item in items {
         match item {
             Item::Image(i) => match (keyed, i.big_endian) {
+                (false, false) if i.eg => {
+                    let src = ImageRawLE::<Rgb565>::new(&i.le, u32::from(i.w));
+                    place(c, &src, i);
+                }
+                (false, true) if i.eg => {
+                    let src = ImageRawBE::<Rgb565>::new(&i.be, u32::from(i.w));
+                    place(c, &src, i);
+                }
                 (false, false) => {
                     let src = RawImage::<format::Rgb565>::new(&i.le, i.w, i.h).unwrap();
                     place(c, &src, i);

@@ -41,6 +41,13 @@ fn rgb<T: RgbColor>(c: T) -> [u16; 3] {
     ]
 }
 
+/// The Rgb565 code of a colour of 5, 6 and 5 bits.
+#[inline]
+fn rgb565<T: RgbColor>(c: &T) -> Option<u16> {
+    ((T::MAX_R, T::MAX_G, T::MAX_B) == (31, 63, 31))
+        .then(|| u16::from(c.r() & 31) << 11 | u16::from(c.g() & 63) << 5 | u16::from(c.b() & 31))
+}
+
 macro_rules! rgb_into_linear {
     ($($t:ty),*) => {$(
         #[cfg_attr(docsrs, doc(cfg(feature = "embedded-graphics")))]
@@ -49,6 +56,11 @@ macro_rules! rgb_into_linear {
             #[inline]
             fn into_linear(self) -> [u16; 3] {
                 rgb(self)
+            }
+
+            #[inline]
+            fn rgb565_code(&self) -> Option<u16> {
+                rgb565(self)
             }
         }
 

@@ -224,6 +224,18 @@ impl Lin<1> {
 pub trait IntoLinear<const C: usize> {
     /// The linear 12-bit channels of the colour.
     fn into_linear(self) -> [u16; C];
+
+    /// The colour's Rgb565 code (`r << 11 | g << 5 | b`), when it has 5,
+    /// 6 and 5 bits of sRGB channels (embedded-graphics' `Rgb565`,
+    /// `Bgr565`), whose channels decoded by the sRGB tables are
+    /// [`into_linear`](Self::into_linear)'s three: an image of such
+    /// colours is sent as it is read where the display keeps them
+    /// (`Profile::keeps_rgb565`). `None` for any other colour, and from
+    /// a one-channel conversion (its value is a luminance).
+    #[inline]
+    fn rgb565_code(&self) -> Option<u16> {
+        None
+    }
 }
 
 impl<const C: usize> IntoLinear<C> for [u16; C] {

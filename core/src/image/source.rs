@@ -284,6 +284,25 @@ mod eg {
                 None => Lin { c: [0; 3], a: 0 },
             }
         }
+
+        /// An image of Rgb565 colours by their codes (the run's first
+        /// texel tells; a pixel the image does not give is code 0, black:
+        /// what `texel` gives it).
+        #[inline]
+        fn store_rgb565<const C: usize>(&self, x: i32, y: i32, n: usize, px: &mut [i32]) -> bool {
+            let first = self.0.pixel(Point::new(x, y));
+            if C == 0 || first.and_then(|c| c.rgb565_code()).is_none() {
+                return false;
+            }
+            for (k, p) in px.chunks_exact_mut(C).take(n).enumerate() {
+                let at = Point::new(x.wrapping_add(k as i32), y);
+                let code = self.0.pixel(at).and_then(|c| c.rgb565_code());
+                if let Some(p) = p.first_mut() {
+                    *p = i32::from(code.unwrap_or(0));
+                }
+            }
+            true
+        }
     }
 
     /// An embedded-graphics image held by value (a copy of an `ImageRaw`).
@@ -301,6 +320,11 @@ mod eg {
         #[inline]
         fn texel(&self, x: i32, y: i32) -> Lin {
             Pixels(&self.0).texel(x, y)
+        }
+
+        #[inline]
+        fn store_rgb565<const C: usize>(&self, x: i32, y: i32, n: usize, px: &mut [i32]) -> bool {
+            Pixels(&self.0).store_rgb565::<C>(x, y, n, px)
         }
     }
 
