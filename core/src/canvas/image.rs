@@ -1,6 +1,9 @@
 //! Images on the canvas: the image's outline (its transformed rectangle,
 //! or a clip shape) walked into the scratch like any shape, composed with
-//! the image's texels as the paint ([`Paint::Image`]).
+//! the image's texels as the paint ([`Paint::Image`]). An opaque image
+//! copied texel for pixel, its rectangle on pixel boundaries, is composed
+//! row by row without its edges (`BandBuffer::cover_with_image`: the
+//! same pixels, none of them partly covered).
 
 use core::ops::Range;
 
