@@ -1,16 +1,16 @@
 //! An unscaled Rgb565 image at a whole pixel (softedge's `RawImage`, or
-//! embedded-graphics' `ImageRaw`) is stored as its codes and,
-//! where the display's profile tones every Rgb565 colour back to itself,
-//! sent as it was read (issue #35's copy). The promise is the same bits:
-//! every frame here is rendered twice, once with the images as plain
-//! Rgb565 sources (softedge's or embedded-graphics') and once with the same texels as colour-keyed sources
-//! whose key never occurs (decoded texel by texel, composited as any
-//! image with alpha is, never stored as codes), and the two frames must be
-//! equal pixel for pixel: with shapes, translucent shapes, text, gradients
-//! and added shapes over and under the images, bands of 1 to 16 rows,
-//! bands of more colours than the palette holds, streamed, lent and in
-//! windows, through profiles that keep Rgb565 colours (sRGB) and that do
-//! not (γ 2.2, ordered dithering, Rgb888).
+//! embedded-graphics' `ImageRaw`) is stored as its codes and, where the
+//! display's profile tones every Rgb565 colour back to itself, sent as it
+//! was read (issue #35's copy). The promise is the same bits: every frame
+//! here is rendered twice, once with the images as plain Rgb565 sources
+//! (softedge's or embedded-graphics') and once with the same texels as
+//! colour-keyed sources whose key never occurs (decoded texel by texel,
+//! composited as any image with alpha is, never stored as codes), and the
+//! two frames must be equal pixel for pixel: with shapes, translucent
+//! shapes, text, gradients and added shapes over and under the images,
+//! bands of 1 to 16 rows, bands of more colours than the palette holds,
+//! streamed, lent and in windows, through profiles that keep Rgb565
+//! colours (sRGB) and that do not (γ 2.2, ordered dithering, Rgb888).
 
 use embedded_graphics::image::{ImageRawBE, ImageRawLE};
 use embedded_graphics::pixelcolor::{PixelColor, Rgb565, Rgb888};
