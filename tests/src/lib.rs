@@ -16,6 +16,7 @@
 //! - [`raster_font`]: fonts rasterized ahead of time, made at run time
 //!   (the code under test's own rasterizer: what the text tests draw, not
 //!   a reference).
+//! - [`lcg`]: a small deterministic generator for random cases.
 //! - [`screen`]: a display that keeps the pixels and windows it is sent,
 //!   for the renderer's tests.
 //! - [`glyph_ref`]: glyph outlines read by `ttf-parser`, flattened in `f64`
@@ -26,6 +27,7 @@
 pub mod exact;
 pub mod frame;
 pub mod glyph_ref;
+pub mod lcg;
 pub mod path_ref;
 pub mod raster_font;
 pub mod ratio;

@@ -28,32 +28,19 @@ use softedge::text::AaTextStyle;
 use softedge::tone::format::{RawColor, ToneFormat};
 use softedge::tone::Profile;
 
+use softedge_tests::lcg::Lcg;
 use softedge_tests::screen::Screen;
 
 const W: u16 = 40;
 const H: u16 = 34;
 
-/// A small deterministic generator.
-struct Lcg(u64);
-
-impl Lcg {
-    fn next(&mut self) -> u64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        self.0 >> 33
-    }
-    fn below(&mut self, n: u64) -> u64 {
-        self.next() % n
-    }
-    fn color(&mut self) -> Rgb565 {
-        Rgb565::new(
-            self.below(32) as u8,
-            self.below(64) as u8,
-            self.below(32) as u8,
-        )
-    }
+/// A random Rgb565 colour.
+fn color(rng: &mut Lcg) -> Rgb565 {
+    Rgb565::new(
+        rng.below(32) as u8,
+        rng.below(64) as u8,
+        rng.below(32) as u8,
+    )
 }
 
 /// An Rgb565 code decoded by the sRGB tables, written here.
@@ -132,12 +119,12 @@ enum Item {
 fn random_image(rng: &mut Lcg) -> Img {
     let (w, h) = (1 + rng.below(22) as u16, 1 + rng.below(18) as u16);
     // A few colours, repeated, or every texel its own.
-    let few: Vec<u16> = (0..1 + rng.below(6)).map(|_| rng.next() as u16).collect();
+    let few: Vec<u16> = (0..1 + rng.below(6)).map(|_| rng.bits() as u16).collect();
     let many = rng.below(2) == 0;
     let codes: Vec<u16> = (0..usize::from(w) * usize::from(h))
         .map(|_| {
             if many {
-                rng.next() as u16
+                rng.bits() as u16
             } else {
                 few[rng.below(few.len() as u64) as usize]
             }
@@ -192,11 +179,11 @@ fn random_scene(rng: &mut Lcg) -> Vec<Item> {
         };
         items.push(match rng.below(8) {
             0..=2 => Item::Image(random_image(rng)),
-            3 => Item::Disc(p, 2 + rng.below(20) as u32, rng.color(), opacity),
-            4 => Item::Rect(p, size, rng.color(), opacity, rng.below(4) == 0),
-            5 => Item::Text(p, rng.color()),
-            6 => Item::Ramp(p, size, rng.color(), rng.color()),
-            _ => Item::Confetti(rng.next()),
+            3 => Item::Disc(p, 2 + rng.below(20) as u32, color(rng), opacity),
+            4 => Item::Rect(p, size, color(rng), opacity, rng.below(4) == 0),
+            5 => Item::Text(p, color(rng)),
+            6 => Item::Ramp(p, size, color(rng), color(rng)),
+            _ => Item::Confetti(rng.bits()),
         });
     }
     items
@@ -289,7 +276,7 @@ where
                         rng.below(u64::from(H)) as i32,
                     );
                     let _ = Rectangle::new(p, Size::new(2, 2))
-                        .into_styled(AaStyle::with_fill(Col::from(rng.color())))
+                        .into_styled(AaStyle::with_fill(Col::from(color(&mut rng))))
                         .draw(c);
                 }
             }

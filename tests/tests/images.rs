@@ -19,22 +19,7 @@ use softedge::image::{format, AaImage, ImageFault, ImageSource, RawImage, Scale}
 use softedge::path::Degrees;
 use softedge::style::Opacity;
 use softedge::DrawError;
-
-/// A small deterministic generator.
-struct Lcg(u64);
-
-impl Lcg {
-    fn next(&mut self) -> u64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        self.0 >> 33
-    }
-    fn below(&mut self, n: u64) -> u64 {
-        self.next() % n
-    }
-}
+use softedge_tests::lcg::Lcg;
 
 /// The transform in `f64`: pixel centre to image `(u, v)`, and the image's
 /// corners on screen.
