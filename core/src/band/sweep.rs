@@ -472,7 +472,7 @@ impl<const C: usize> MaskBlend<C> {
         if t == MIXED || t == tags::SOURCE {
             if t == tags::SOURCE {
                 // An image's code: its value, then blended as any other.
-                *p = tags::decode(p.first().copied().unwrap_or(0));
+                tags::load(p, t, palette.entries());
                 *word |= 0xff << shift;
             }
             blend_over(p, &self.f, s);

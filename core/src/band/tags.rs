@@ -90,11 +90,9 @@ pub(crate) fn load<const C: usize>(p: &mut [i32; C], t: u8, entries: &[[i32; C]]
 /// entry's, its code's ([`SOURCE`]), or `px` (`MIXED`).
 #[inline(always)]
 pub(crate) fn value<const C: usize>(px: &[i32; C], t: u8, entries: &[[i32; C]]) -> [i32; C] {
-    match entries.get(usize::from(t)) {
-        Some(v) => *v,
-        None if t == SOURCE => decode(px.first().copied().unwrap_or(0)),
-        None => *px,
-    }
+    let mut v = *px;
+    load(&mut v, t, entries);
+    v
 }
 
 /// Words of tags per band row of `w` pixels.
