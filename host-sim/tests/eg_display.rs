@@ -2,9 +2,12 @@
 //! scene file into a display type from another crate: the simulator's
 //! `SimulatorDisplay`, wrapped in [`BandsOnly`], a `DrawTarget` that
 //! accepts whole bands through `fill_contiguous` (or `fill_solid`, for a
-//! band nothing was drawn on) and panics on anything else: per-pixel
-//! writes (`draw_iter`), clears, and writes outside the display. It has no way to read pixels back, as a write-only
-//! SPI display has none.
+//! band nothing was drawn on, or for the background left and right of a
+//! band's drawn columns: a band may come in up to three rectangles side
+//! by side) and panics on anything else: per-pixel writes (`draw_iter`),
+//! clears, writes outside the display, and a band's pixels written twice
+//! or left out. It has no way to read pixels back, as a write-only SPI
+//! display has none.
 //!
 //! The display's pixels must equal what the host renderer shows for the
 //! same scene (`SceneFile::render_linear`, then its tone stage), for the
@@ -25,12 +28,18 @@ use softedge_sim::scene::Scene;
 use softedge_sim::scene_file::{self, DisplayFormat, Frame, SceneFile};
 
 /// A display that takes whole bands only: every `fill_contiguous` (or
-/// `fill_solid`) must be a full-width rectangle inside the display,
-/// directly below the previous one, with exactly one colour per pixel.
+/// `fill_solid`) must be a rectangle inside the display, either beside
+/// the previous ones of the band being sent (its rows, other columns) or,
+/// once that band's columns are all sent, directly below it, with exactly
+/// one colour per pixel.
 struct BandsOnly<D> {
     inner: D,
-    /// The rectangles received, in order.
+    /// The bands received, in order (each the full width once complete).
     bands: Vec<Rectangle>,
+    /// The columns of the last band received so far.
+    columns: Vec<(i32, i32)>,
+    /// Rectangles received.
+    parts: usize,
 }
 
 impl<D: OriginDimensions> BandsOnly<D> {
@@ -38,13 +47,52 @@ impl<D: OriginDimensions> BandsOnly<D> {
         Self {
             inner,
             bands: Vec::new(),
+            columns: Vec::new(),
+            parts: 0,
         }
     }
 
-    fn next_row(&self) -> i32 {
-        self.bands
-            .last()
-            .map_or(0, |r| r.top_left.y + r.size.height as i32)
+    /// Columns of the last band received so far.
+    fn sent(&self) -> u32 {
+        self.columns.iter().map(|&(a, b)| (b - a) as u32).sum()
+    }
+
+    /// Takes `area` as a part of the band being sent or the next band.
+    fn take(&mut self, area: &Rectangle) {
+        let (x0, x1) = (area.top_left.x, area.top_left.x + area.size.width as i32);
+        let width = self.inner.size().width;
+        let last = self.bands.last().copied();
+        match last {
+            Some(band) if self.sent() < width => {
+                assert_eq!(
+                    (area.top_left.y, area.size.height),
+                    (band.top_left.y, band.size.height),
+                    "{area:?}: the rest of band {band:?}"
+                );
+                assert!(
+                    self.columns.iter().all(|&(a, b)| x1 <= a || b <= x0),
+                    "{area:?}: columns of band {band:?} sent twice"
+                );
+            }
+            _ => {
+                let next = last.map_or(0, |r| r.top_left.y + r.size.height as i32);
+                assert_eq!(
+                    area.top_left.y, next,
+                    "{area:?}: bands come top to bottom, each once"
+                );
+                self.columns.clear();
+                self.bands.push(Rectangle::new(
+                    Point::new(0, area.top_left.y),
+                    Size::new(0, area.size.height),
+                ));
+            }
+        }
+        self.columns.push((x0, x1));
+        self.parts += 1;
+        let sent = self.sent();
+        if let Some(band) = self.bands.last_mut() {
+            band.size.width = sent;
+        }
     }
 }
 
@@ -86,16 +134,13 @@ impl<D: DrawTarget + OriginDimensions> DrawTarget for BandsOnly<D> {
             area.top_left.y >= 0 && bottom <= size.height as i32,
             "{area:?} is outside the display ({size:?})"
         );
-        assert_eq!(area.top_left.x, 0, "{area:?}: a band starts at column 0");
-        assert_eq!(
-            area.size.width, size.width,
-            "{area:?}: a band is full width"
+        assert!(
+            area.top_left.x >= 0 && area.top_left.x + area.size.width as i32 <= size.width as i32,
+            "{area:?} is outside the display ({size:?})"
         );
-        assert!(area.size.height > 0, "{area:?}: an empty band");
-        assert_eq!(
-            area.top_left.y,
-            self.next_row(),
-            "{area:?}: bands come top to bottom, each once"
+        assert!(
+            area.size.width > 0 && area.size.height > 0,
+            "{area:?}: an empty band"
         );
         let colors: Vec<Self::Color> = colors.into_iter().collect();
         assert_eq!(
@@ -103,7 +148,7 @@ impl<D: DrawTarget + OriginDimensions> DrawTarget for BandsOnly<D> {
             (area.size.width * area.size.height) as usize,
             "{area:?}: one colour per pixel"
         );
-        self.bands.push(*area);
+        self.take(area);
         self.inner.fill_contiguous(area, colors)
     }
 }
@@ -147,8 +192,8 @@ where
     (target.inner, target.bands)
 }
 
-/// Checks the bands: `ceil(h / rows)` full-width rectangles covering the
-/// frame top to bottom (BandsOnly checked each as it came).
+/// Checks the bands: `ceil(h / rows)` full-width bands covering the
+/// frame top to bottom (BandsOnly checked each part as it came).
 fn assert_whole_bands(bands: &[Rectangle], w: u16, h: u16, rows: u16) {
     assert_eq!(bands.len(), usize::from(h.div_ceil(rows)), "rows {rows}");
     let covered: u32 = bands.iter().map(|r| r.size.height).sum();
@@ -204,6 +249,47 @@ fn gray8_simulator_display_receives_whole_bands_equal_to_the_host_render() {
         assert_whole_bands(&bands, w, h, rows);
         assert!(display_codes(&display) == want, "band rows {rows}");
     }
+}
+
+/// A disc in the middle of a wide display: its bands come in three
+/// parts each (the background left and right of the drawn columns in
+/// `fill_solid`s), the pixels those of the host render.
+#[test]
+fn a_band_may_come_in_parts_side_by_side() {
+    use softedge::geom::FinePoint;
+    use softedge::path::Circle;
+    let (w, h, rows) = (96u16, 24u16, 8u16);
+    let mut acc = vec![0i32; BandBuffer::<1>::acc_len(w, rows)];
+    let mut cover = vec![0i32; BandBuffer::<1>::cover_len(w, rows)];
+    let display = SimulatorDisplay::<Gray8>::new(Size::new(u32::from(w), u32::from(h)));
+    let mut t = BandsOnly::new(display);
+    static GRAY: Gray8Format = Gray8Format::new(softedge::tone::Curve::Srgb);
+    let disc = Circle::new(FinePoint::new(48 << 10, 12 << 10), 6 << 10);
+    let draw = |c: &mut softedge::canvas::Canvas<'_, '_, 1, Gray8>| {
+        use softedge::style::{Blend, FillRule, Opacity};
+        c.fill_shape(
+            &disc,
+            [3000],
+            FillRule::NonZero,
+            Blend::Over,
+            Opacity::OPAQUE,
+        )
+    };
+    Renderer::<1>::new(&mut acc, &mut cover, &mut [], w, h, rows)
+        .unwrap()
+        .render(&mut t, &GRAY, [100], draw)
+        .unwrap();
+    assert_whole_bands(&t.bands, w, h, rows);
+    // Rows 6..18: bands 0..8, 8..16 and 16..24 each in three parts.
+    assert_eq!(t.parts, 9);
+    let mut whole = SimulatorDisplay::<Gray8>::new(Size::new(u32::from(w), u32::from(h)));
+    let mut acc = vec![0i32; BandBuffer::<1>::acc_len(w, h)];
+    let mut cover = vec![0i32; BandBuffer::<1>::cover_len(w, h)];
+    Renderer::<1>::new(&mut acc, &mut cover, &mut [], w, h, h)
+        .unwrap()
+        .render(&mut whole, &GRAY, [100], draw)
+        .unwrap();
+    assert!(display_codes(&t.inner) == display_codes(&whole));
 }
 
 #[test]

@@ -132,3 +132,44 @@ fn a_128x64_mono_frame_needs_at_most_4_kib_in_all() {
     );
     // No frame buffer among them (a buffered driver's 1 KiB).
 }
+
+/// A small disc in the middle of the panel, ordered dither (black the
+/// same everywhere, so a band's background could go beside its drawn
+/// columns): the writer still gets whole rows of pages (a 1-bit display
+/// packs rows into bytes) and the panel shows the simulator's frame.
+#[test]
+fn a_small_shape_in_the_middle_still_sends_whole_pages() {
+    fn draw<D>(target: &mut D, rows: u16)
+    where
+        D: DrawTarget<Color = BinaryColor> + OriginDimensions,
+        D::Error: core::fmt::Debug,
+    {
+        let mut acc = vec![0; BandBuffer::<1>::acc_len(W, rows)];
+        let mut cover = vec![0; BandBuffer::<1>::cover_len(W, rows)];
+        let mut renderer = Renderer::new(&mut acc, &mut cover, &mut [], W, H, rows).unwrap();
+        let disc = AaStyle::with_fill(BinaryColor::On).opacity(Opacity::from_percent(50));
+        renderer
+            .render(
+                target,
+                softedge::tone::Bayer8::new(),
+                BinaryColor::Off,
+                |c| {
+                    Circle::with_center(Point::new(64, 30), 15)
+                        .into_styled(disc)
+                        .draw(c)
+                },
+            )
+            .unwrap();
+    }
+    let mut reference = SimulatorDisplay::new(Size::new(u32::from(W), u32::from(H)));
+    draw(&mut reference, 8);
+    for rows in [2, 8] {
+        let mut oled = PageWriter::ssd1306_128x64(I2cOled::new());
+        draw(&mut oled, rows);
+        let i2c = oled.release();
+        assert!(
+            reference.diff(&i2c.frame()).is_none(),
+            "bands of {rows} rows"
+        );
+    }
+}

@@ -635,19 +635,22 @@ pub(crate) struct FlushParts<'p, const C: usize> {
 }
 
 impl<const C: usize> FlushParts<'_, C> {
-    /// The drawn columns of band row `r`, forgotten (the head reset for
+    /// The drawn columns of band row `r` at or right of column `c0`,
+    /// counted from `c0` (empty when none), forgotten (the head reset for
     /// the next band).
-    pub(crate) fn take_drawn(&mut self, r: usize) -> core::ops::Range<u16> {
+    pub(crate) fn take_drawn(&mut self, r: usize, c0: usize) -> core::ops::Range<usize> {
         let w = i32::from(self.band.width);
+        let c0 = c0 as i32;
         match self
             .heads
             .get_mut(r * ROW_HEAD..r * ROW_HEAD + ROW_HEAD)
             .and_then(|h| h.first_chunk_mut::<ROW_HEAD>())
         {
             Some(h) => {
-                let out = h[DIRTY_LO].clamp(0, w) as u16..h[DIRTY_LO + 1].clamp(0, w) as u16;
+                // A row not drawn on holds `0..0`: clamped, empty.
+                let (lo, hi) = (h[DIRTY_LO].clamp(c0, w), h[DIRTY_LO + 1].clamp(c0, w));
                 *h = [i32::MAX, i32::MIN, 0, 0];
-                out
+                (lo - c0) as usize..(hi - c0) as usize
             }
             None => 0..0,
         }
@@ -658,6 +661,27 @@ impl<const C: usize> FlushParts<'_, C> {
         self.heads
             .chunks_exact(ROW_HEAD)
             .all(|h| h[DIRTY_LO] >= h[DIRTY_LO + 1])
+    }
+
+    /// The columns drawn on in any row of the band (empty when none was),
+    /// the rows' heads kept.
+    pub(crate) fn drawn_columns(&self) -> core::ops::Range<u16> {
+        let w = i32::from(self.band.width);
+        // A row not drawn on holds `0..0`: its end is no bound's.
+        let (mut lo, mut hi) = (i32::MAX, 0);
+        for h in self.heads.chunks_exact(ROW_HEAD) {
+            let (a, b) = (h[DIRTY_LO], h[DIRTY_LO + 1]);
+            if a < b {
+                lo = lo.min(a);
+            }
+            hi = hi.max(b);
+        }
+        let (lo, hi) = (lo.clamp(0, w), hi.clamp(0, w));
+        if lo < hi {
+            lo as u16..hi as u16
+        } else {
+            0..0
+        }
     }
 }
 

@@ -5,8 +5,14 @@
 //! fine: nothing is read back), a display [`Profile`] (the tone stage: γ
 //! table and pixel format, or dithering to 1 bit) and a drawing closure;
 //! gives the display one `fill_contiguous` per band over the band's
-//! rectangle, a DMA-friendly stream of rows (a band nothing was drawn on,
-//! one `fill_solid` of the background's colour). A display that sends
+//! drawn columns (those any of its rows was drawn on, out to multiples of
+//! 4), a DMA-friendly stream of rows, and the background left and right
+//! of them in one `fill_solid` a side (a band nothing was drawn on, one
+//! `fill_solid` of the background's colour). Every column is streamed
+//! when the profile's background colour depends on the place (a dither
+//! of a mid gray), when a side would be narrower than 16 columns, and to
+//! a display whose pixels are smaller than a byte (a 1-bit OLED's pages,
+//! 2- and 4-bit panels pack whole rows into bytes). A display that sends
 //! bands by DMA can lend its buffer instead ([`BandTarget`],
 //! [`Renderer::render_lent`]): the band's colours are then made in that
 //! buffer, with no stream of pixels.
@@ -357,7 +363,9 @@ impl<'a, const C: usize> Renderer<'a, C> {
     }
 
     /// Renders one frame: per band, the background, the closure's shapes,
-    /// the profile, one `fill_contiguous`.
+    /// the profile, one `fill_contiguous` over the columns drawn on (the
+    /// background beside them in a `fill_solid` each side; see the
+    /// module's documentation).
     ///
     /// The background is any colour the canvas converts (an
     /// embedded-graphics colour as sRGB, or linear `[u16; C]`).
@@ -398,9 +406,11 @@ impl<'a, const C: usize> Renderer<'a, C> {
 
     /// Renders only the window `area` of the frame (clipped to it): what a
     /// small change costs. The target gets one `fill_contiguous` per band
-    /// over the window's part of the band. With a dithering profile, the
-    /// window is dithered on its own (Bayer matches the full frame; error
-    /// diffusion restarts at the window's edge).
+    /// over the window's part of the band (its drawn columns, the
+    /// background beside them in `fill_solid`s, as [`render`](Self::render)
+    /// sends them). With a dithering profile, the window is dithered on
+    /// its own (Bayer matches the full frame; error diffusion restarts at
+    /// the window's edge).
     pub fn render_window<D, P, B, E, F>(
         &mut self,
         target: &mut D,
@@ -615,7 +625,7 @@ trait Flush<const C: usize> {
     ) -> Result<(), FlushError<Self::Error>>;
 }
 
-/// A `DrawTarget`, sent each band in one `fill_contiguous`.
+/// A `DrawTarget`, sent each band's drawn columns in one `fill_contiguous`.
 struct Streamed<'t, D>(&'t mut D);
 
 impl<D: DrawTarget, const C: usize> Flush<C> for Streamed<'_, D>
@@ -651,9 +661,11 @@ impl<T: BandTarget, const C: usize> Flush<C> for Lent<'_, T> {
 }
 
 /// Sends a band through `profile` to `target` in one `fill_contiguous`
-/// (or one `fill_solid` when nothing was drawn on it and the background
-/// has one colour everywhere), leaving the band clean for the next:
-/// changes zero, heads reset, every tag the background's.
+/// over its drawn columns and one `fill_solid` of the background each
+/// side of them (or one `fill_solid` when nothing was drawn on it), when
+/// the background has one colour everywhere; else in one
+/// `fill_contiguous`. The band is left clean for the next: changes
+/// zero, heads reset, every tag the background's.
 ///
 /// The band's colours are made ([`tone_band`]) into its scratch of
 /// changes (`width * rows` words, all zero between shapes), then streamed
@@ -678,12 +690,58 @@ where
             return target.fill_solid(&area, color);
         }
     }
+    let w = usize::from(band.width);
+    // The columns sent pixel by pixel: those drawn on in some row, out to
+    // whole tag words (`tone_band` makes whole words); the background
+    // beside them goes in one `fill_solid` a side, when that side is at
+    // least `SOLID_SIDE` columns wide (narrower, a window set-up on the
+    // display costs more than it saves). A display whose pixels are
+    // smaller than a byte (1-bit OLED pages, 2- and 4-bit panels) packs
+    // whole rows into its bytes: it gets whole bands.
+    const SOLID_SIDE: usize = 16;
+    let packs = <<D::Color as PixelColor>::Raw as RawData>::BITS_PER_PIXEL < 8;
+    let cols = match uniform {
+        Some(_) if !packs => {
+            let drawn = parts.drawn_columns();
+            let a = usize::from(drawn.start) & !3;
+            let b = usize::from(drawn.end).next_multiple_of(4).min(w);
+            let a = if a < SOLID_SIDE { 0 } else { a };
+            let b = if w - b < SOLID_SIDE { w } else { b };
+            a..b
+        }
+        _ => 0..w,
+    };
     let out = core::mem::take(&mut parts.out);
-    tone_band(&mut parts, profile, uniform.is_some(), out, |code| {
-        code as i32
-    });
-    let len = usize::from(band.width) * usize::from(band.rows);
-    stream(out.get_mut(..len).unwrap_or_default(), &area, target)
+    let put = |code| code as i32;
+    if cols.len() == w {
+        tone_band::<_, _, _, C, false>(&mut parts, profile, uniform.is_some(), out, 0..w, put);
+    } else {
+        let cols = cols.clone();
+        tone_band::<_, _, _, C, true>(&mut parts, profile, uniform.is_some(), out, cols, put);
+    }
+    let side = |x0: usize, x1: usize| {
+        Rectangle::new(
+            Point::new(band.x0 + x0 as i32, band.y0),
+            Size::new((x1 - x0) as u32, u32::from(band.rows)),
+        )
+    };
+    // The drawn columns first: streaming them leaves the scratch zero
+    // whatever the target answers.
+    let len = cols.len() * usize::from(band.rows);
+    stream(
+        out.get_mut(..len).unwrap_or_default(),
+        &side(cols.start, cols.end),
+        target,
+    )?;
+    if let Some(color) = uniform {
+        if cols.start > 0 {
+            target.fill_solid(&side(0, cols.start), color)?;
+        }
+        if cols.end < w {
+            target.fill_solid(&side(cols.end, w), color)?;
+        }
+    }
+    Ok(())
 }
 
 /// Streams `out` to `area` of `target` in one `fill_contiguous`, each
@@ -746,11 +804,12 @@ where
             "BandTarget::Raw holds fewer bits than the display's colour"
         );
     }
-    tone_band(
+    tone_band::<_, _, _, C, false>(
         &mut parts,
         profile,
         uniform.is_some(),
         out,
+        0..usize::from(band.width),
         T::Raw::from_raw,
     );
     target.send(&area).map_err(FlushError::Target)
@@ -772,25 +831,31 @@ fn band_area(band: crate::band::Band) -> Rectangle {
     )
 }
 
-/// The colours of a band's pixels as raw display bits into `out` (row
-/// after row, `width * rows` of them; `put` stores a raw colour), and the
-/// band reset for the next (every pixel made reset to the background,
-/// heads reset, every tag the background's).
+/// The colours of a band's pixels in columns `cols` as raw display bits
+/// into `out` (row after row, `cols.len() * rows` of them; `put` stores a
+/// raw colour), and the band reset for the next (every pixel made reset
+/// to the background, heads reset, every tag the background's). `cols`
+/// holds every drawn column when `uniform` and starts on a tag word (a
+/// multiple of 4 columns); else it is the whole band. The profile's rows
+/// ([`ToneRow`]) start at `cols.start`. `SHIFT` false: `cols` is the
+/// whole band, known at compile time (the per-row offsets fold away).
 ///
 /// A pixel tagged with a palette entry gets the entry's colour, toned
 /// once for the band (see `band::tags`); the others are resolved (the one
 /// rounding), toned and packed one by one; columns left and right of a
 /// row's drawn extent get the background's (`uniform`: the profile has
 /// one colour for it everywhere; else every column is made).
-fn tone_band<O: Copy, P, const C: usize>(
+fn tone_band<O: Copy, P, F, const C: usize, const SHIFT: bool>(
     parts: &mut crate::band::FlushParts<'_, C>,
     profile: &mut P,
     uniform: bool,
     out: &mut [O],
-    put: impl Fn(u32) -> O + Copy,
+    cols: core::ops::Range<usize>,
+    put: F,
 ) where
     P: Profile<C>,
     P::Color: RawColor,
+    F: Fn(u32) -> O + Copy,
 {
     let band = parts.band;
     // The palette's colours, toned once; `known` marks the entries whose
@@ -809,26 +874,33 @@ fn tone_band<O: Copy, P, const C: usize>(
     let dense = parts.palette.dense;
     let keeps565 = profile.keeps_rgb565();
     let bg_code = put(codes[0]);
+    let (c0, mw) = if SHIFT {
+        (cols.start, cols.len())
+    } else {
+        (0, w)
+    };
+    let x0 = band.x0 + c0 as i32;
     for r in 0..rows {
         let y = band.y0 + r as i32;
-        let mut drawn = parts.take_drawn(r);
-        let row_words = r * n..r * n + n;
+        // The row from column `c0` on (`c0` a whole tag word's first);
+        // its drawn columns counted from there.
+        let mut drawn = parts.take_drawn(r, c0);
+        let t0 = r * n + c0 / 4;
         let (Some(out), Some(words), Some(acc)) = (
-            out.get_mut(r * w..r * w + w),
-            parts.tags.get_mut(row_words),
-            parts.acc.get_mut(r * w * C..(r + 1) * w * C),
+            out.get_mut(r * mw..r * mw + mw),
+            parts.tags.get_mut(t0..r * n + n),
+            parts.acc.get_mut((r * w + c0) * C..(r + 1) * w * C),
         ) else {
             continue;
         };
         if !uniform {
-            drawn = 0..band.width;
+            drawn = 0..w;
         }
-        let drawn = usize::from(drawn.start)..usize::from(drawn.end);
         if !drawn.is_empty() {
             profile.start_row(&if dense {
-                ToneRow::new(y, band.x0, acc)
+                ToneRow::new(y, x0, acc)
             } else {
-                ToneRow::tagged(y, band.x0, acc, words, parts.palette.entries())
+                ToneRow::tagged(y, x0, acc, words, parts.palette.entries())
             });
         }
         if let Some(left) = out.get_mut(..drawn.start) {
@@ -844,23 +916,28 @@ fn tone_band<O: Copy, P, const C: usize>(
             bg: bg_acc,
             profile: &*profile,
             keeps: keeps565,
-            x0: band.x0,
+            x0,
             y,
         };
         // The next band's tags: the background's. Outside the drawn
         // extent they are already (nothing drawn there since the last
         // flush); a dense band's are all `MIXED`.
-        let (k0, k1) = if dense {
-            (0, n)
+        let k = if dense {
+            r * n..r * n + n
         } else {
-            (drawn.start / 4, drawn.end.div_ceil(4))
+            t0 + drawn.start / 4..t0 + drawn.end.div_ceil(4)
         };
         tone.row(out, words, acc, drawn, dense, put);
-        if let Some(drawn_words) = words.get_mut(k0..k1) {
+        if let Some(drawn_words) = parts.tags.get_mut(k) {
             drawn_words.fill(0);
         }
         debug_assert!(
-            words.iter().all(|&t| t == 0),
+            parts
+                .tags
+                .get(r * n..r * n + n)
+                .into_iter()
+                .flatten()
+                .all(|&t| t == 0),
             "a tag outside row {y}'s drawn extent"
         );
     }
@@ -1319,13 +1396,28 @@ mod tests {
         Col: PixelColorRaw + crate::color::IntoLinear<C>,
         P: Profile<C, Color = Col>,
     {
+        reference_of(scene::<C, Col>(seed, w, h), w, h, bg, profile)
+    }
+
+    /// [`reference`] of any drawing.
+    fn reference_of<const C: usize, Col, P>(
+        mut draw: impl FnMut(&mut Canvas<'_, '_, C, Col>) -> Result<(), DrawError>,
+        w: u16,
+        h: u16,
+        bg: [u16; C],
+        profile: &P,
+    ) -> Vec<u32>
+    where
+        Col: PixelColorRaw + crate::color::IntoLinear<C>,
+        P: Profile<C, Color = Col>,
+    {
         let mut acc = vec![0; BandBuffer::<C>::acc_len(w, h)];
         let mut cover = vec![0; BandBuffer::<C>::cover_len(w, h)];
         let mut buf =
             BandBuffer::<C>::new(&mut acc, &mut cover, crate::band::Band::new(w, 0, h)).unwrap();
         buf.clear(bg);
         let mut canvas: Canvas<'_, '_, C, Col> = Canvas::typed(&mut buf, None);
-        let _ = scene::<C, Col>(seed, w, h)(&mut canvas);
+        let _ = draw(&mut canvas);
         let mut out = Vec::new();
         for y in 0..i32::from(h) {
             for x in 0..i32::from(w) {
@@ -1615,6 +1707,217 @@ mod tests {
             r.render(&mut shown, &RGB565, bg, scene::<3, Rgb565>(seed, w, h))
                 .unwrap();
             assert!(shown.px == want, "case {case}: {w}x{h} in bands of {rows}");
+        }
+    }
+
+    /// A display that counts how often each pixel is written and what
+    /// came pixel by pixel (`fill_contiguous`) and in one colour
+    /// (`fill_solid`).
+    struct Tally<Col> {
+        shown: Capture<Col>,
+        writes: Vec<u32>,
+        contiguous: usize,
+        solid: usize,
+    }
+
+    impl<Col> OriginDimensions for Tally<Col> {
+        fn size(&self) -> Size {
+            self.shown.size()
+        }
+    }
+
+    impl<Col: PixelColorRaw> Tally<Col> {
+        fn put(&mut self, area: &Rectangle, colors: impl IntoIterator<Item = Col>) -> usize {
+            let mut n = 0;
+            for (p, c) in area.points().zip(colors) {
+                let k = p.y as usize * self.shown.w as usize + p.x as usize;
+                self.writes[k] += 1;
+                self.shown.px[k] = c.to_raw();
+                n += 1;
+            }
+            n
+        }
+    }
+
+    impl<Col: PixelColorRaw> DrawTarget for Tally<Col> {
+        type Color = Col;
+        type Error = core::convert::Infallible;
+        fn draw_iter<I: IntoIterator<Item = Pixel<Col>>>(
+            &mut self,
+            _: I,
+        ) -> Result<(), Self::Error> {
+            panic!("the renderer sends bands, not pixels");
+        }
+        fn fill_contiguous<I: IntoIterator<Item = Col>>(
+            &mut self,
+            area: &Rectangle,
+            colors: I,
+        ) -> Result<(), Self::Error> {
+            self.contiguous += self.put(area, colors);
+            Ok(())
+        }
+        fn fill_solid(&mut self, area: &Rectangle, color: Col) -> Result<(), Self::Error> {
+            self.solid += self.put(area, core::iter::repeat(color));
+            Ok(())
+        }
+    }
+
+    /// Every pixel of a frame is sent once; the background beside a
+    /// band's drawn columns goes by `fill_solid`, so a small shape costs
+    /// the display's stream of pixels only about its width.
+    #[test]
+    fn every_pixel_is_sent_once_and_the_background_beside_the_drawing_in_one_colour() {
+        static RGB565: Rgb565Format = Rgb565Format::new(Curve::Srgb);
+        static DITHER: crate::tone::ordered::Rgb565Dither =
+            crate::tone::ordered::Rgb565Dither::new(Curve::Srgb);
+        let bg = [300, 2000, 40];
+        let mut rng = Lcg(0x0b5e_55ed_f111);
+        let mut beside = 0;
+        for case in 0..300u64 {
+            let (w, h) = (1 + rng.below(120) as u16, 1 + rng.below(30) as u16);
+            let size = (w, h, 1 + rng.below(9) as u16);
+            let seed = rng.next_u64();
+            let sent = match case % 4 {
+                // Colours that depend on the column (period 5, not a tag
+                // word's 4) over a background of one colour: the drawn
+                // columns are toned at their place.
+                0 => tally_frame(
+                    &Striped(&RGB565),
+                    [0; 3],
+                    || small_shapes(seed, w, h),
+                    size,
+                    case,
+                ),
+                // Dithered colours over a background the dither leaves
+                // one colour (black).
+                1 => tally_frame(&&DITHER, [0; 3], || small_shapes(seed, w, h), size, case),
+                2 => tally_frame(&&RGB565, bg, || small_shapes(seed, w, h), size, case),
+                _ => tally_frame(&&RGB565, bg, || scene::<3, Rgb565>(seed, w, h), size, case),
+            };
+            beside += usize::from(sent);
+        }
+        // The background beside the drawing went in `fill_solid`s often.
+        assert!(beside > 100, "{beside} of 300 frames");
+        // A disc of radius 5 px in a 200-px-wide frame: its bands stream
+        // its columns (out to whole tag words), not the frame's width.
+        let (w, h, rows) = (200u16, 32u16, 16u16);
+        let mut acc = vec![0; BandBuffer::<3>::acc_len(w, rows)];
+        let mut cover = vec![0; BandBuffer::<3>::cover_len(w, rows)];
+        let mut r = Renderer::<3>::new(&mut acc, &mut cover, &mut [], w, h, rows).unwrap();
+        let mut tally = Tally {
+            shown: Capture::<Rgb565>::new(w, h),
+            writes: vec![0; usize::from(w) * usize::from(h)],
+            contiguous: 0,
+            solid: 0,
+        };
+        r.render(
+            &mut tally,
+            &RGB565,
+            bg,
+            |cv: &mut Canvas<'_, '_, 3, Rgb565>| {
+                let disc = crate::path::Circle::new(FinePoint::new(101 << 10, 16 << 10), 5 << 10);
+                let op = Opacity::OPAQUE;
+                cv.fill_shape(&disc, [4000, 100, 100], FillRule::NonZero, Blend::Over, op)
+            },
+        )
+        .unwrap();
+        assert!(tally.writes.iter().all(|&k| k == 1));
+        // Columns 96..107 drawn, 96..108 streamed, in both bands.
+        assert_eq!(tally.contiguous, 12 * 32);
+    }
+
+    /// Rgb565, each colour but black changed by its column (`x mod 5`).
+    #[derive(Clone, Copy)]
+    struct Striped(&'static Rgb565Format);
+
+    impl Profile<3> for Striped {
+        type Color = Rgb565;
+        fn color(&self, x: i32, _y: i32, lin: [u16; 3]) -> Rgb565 {
+            let c = ToneFormat::color(self.0, lin);
+            match c.to_raw() {
+                0 => c,
+                raw => Rgb565::from_raw(raw ^ x.rem_euclid(5) as u32),
+            }
+        }
+        fn uniform(&self, lin: [u16; 3]) -> Option<Rgb565> {
+            let c = ToneFormat::color(self.0, lin);
+            (c.to_raw() == 0).then_some(c)
+        }
+    }
+
+    /// A frame of `draw` through [`Tally`], twice with one renderer: each
+    /// pixel sent once, the colour of [`reference_of`]; true when some
+    /// band sent background beside its drawn columns.
+    fn tally_frame<P, F>(
+        profile: &P,
+        bg: [u16; 3],
+        draw: impl Fn() -> F,
+        (w, h, rows): (u16, u16, u16),
+        case: u64,
+    ) -> bool
+    where
+        P: Profile<3, Color = Rgb565> + Copy,
+        F: FnMut(&mut Canvas<'_, '_, 3, Rgb565>) -> Result<(), DrawError>,
+    {
+        let want = reference_of(draw(), w, h, bg, profile);
+        let mut acc = vec![0; BandBuffer::<3>::acc_len(w, rows)];
+        let mut cover = vec![0; BandBuffer::<3>::cover_len(w, rows)];
+        let mut r = Renderer::<3>::new(&mut acc, &mut cover, &mut [], w, h, rows).unwrap();
+        let n = usize::from(w) * usize::from(h);
+        let mut beside = false;
+        for _ in 0..2 {
+            let mut tally = Tally {
+                shown: Capture::<Rgb565>::new(w, h),
+                writes: vec![0; n],
+                contiguous: 0,
+                solid: 0,
+            };
+            r.render(&mut tally, *profile, bg, draw()).unwrap();
+            assert!(tally.writes.iter().all(|&k| k == 1), "case {case}");
+            assert!(
+                tally.shown.px == want,
+                "case {case}: {w}x{h} in bands of {rows}"
+            );
+            assert_eq!(tally.contiguous + tally.solid, n, "case {case}");
+            beside |= tally.contiguous > 0 && tally.solid > 0;
+        }
+        beside
+    }
+
+    /// A few small shapes (discs, triangles; opaque or not, over or
+    /// added) in a `w x h` frame.
+    fn small_shapes(
+        seed: u64,
+        w: u16,
+        h: u16,
+    ) -> impl FnMut(&mut Canvas<'_, '_, 3, Rgb565>) -> Result<(), DrawError> {
+        move |c| {
+            let mut rng = Lcg(seed);
+            for _ in 0..1 + rng.below(4) {
+                let (x, y) = (
+                    rng.below(u64::from(w) << 10) as i32,
+                    rng.below(u64::from(h) << 10) as i32,
+                );
+                let size = 256 + rng.below(12 << 10) as i32;
+                let col = [rng.below(4096) as u16, 900, rng.below(4096) as u16];
+                let op = match rng.below(3) {
+                    0 => Opacity::from_percent(40),
+                    _ => Opacity::OPAQUE,
+                };
+                let blend = [Blend::Over, Blend::Add][rng.below(4) as usize / 3];
+                let _ = if rng.below(2) == 0 {
+                    let disc = crate::path::Circle::new(FinePoint::new(x, y), size as u32);
+                    c.fill_shape(&disc, col, FillRule::NonZero, blend, op)
+                } else {
+                    let tri = [
+                        FinePoint::new(x, y),
+                        FinePoint::new(x + size, y + size / 3),
+                        FinePoint::new(x - size / 2, y + size),
+                    ];
+                    c.fill(&Contour(&tri), col, FillRule::NonZero, blend, op)
+                };
+            }
+            Ok(())
         }
     }
 

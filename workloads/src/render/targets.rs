@@ -144,12 +144,16 @@ where
         Ok(())
     }
 
-    /// A window's colours, in order, into the buffer (the DMA's source).
-    fn fill_contiguous<I>(&mut self, _area: &Rectangle, colors: I) -> Result<(), Self::Error>
+    /// A window's colours, in order, into the buffer (the DMA's source):
+    /// the area's and no more (e-g's `fill_solid` passes an endless
+    /// `repeat`).
+    fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), Self::Error>
     where
         I: IntoIterator<Item = C>,
     {
-        for (slot, c) in self.px.iter_mut().zip(colors) {
+        let n = area.size.width as usize * area.size.height as usize;
+        let px = self.px.get_mut(..n.min(self.px.len())).unwrap_or_default();
+        for (slot, c) in px.iter_mut().zip(colors) {
             *slot = c.into_storage();
         }
         Ok(())
